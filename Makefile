@@ -1,0 +1,50 @@
+# navfuse: two commands for a fresh Debian 12 machine.
+#   make demo   install what is missing, build, replay the bundled VN-300 sample
+#   make test   install what is missing, build, run every test through ctest
+# Also: make bench (Google Benchmark programs), make sanitize (ASan+UBSan build, tests and
+# fuzz targets under clang), make build, make clean.
+
+BUILD      ?= build/release
+SAN_BUILD  ?= build/sanitize
+JOBS       ?= $(shell nproc)
+# Warnings are errors in CI (CI=true is set there).
+WERROR     ?= $(if $(CI),ON,OFF)
+CTEST_ARGS ?=
+
+.PHONY: all deps configure build test demo bench sanitize clean
+
+all: build
+
+deps:
+	@scripts/install-deps.sh
+
+$(BUILD)/build.ninja: | deps
+	cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DNAVFUSE_WERROR=$(WERROR)
+
+configure: deps $(BUILD)/build.ninja
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+
+demo: build
+	@scripts/demo.sh $(BUILD)
+
+bench: configure
+	cmake --build $(BUILD) -j $(JOBS) --target navfuse_benchmarks
+	@scripts/bench.sh $(BUILD)
+
+# ASan+UBSan with clang, plus the libFuzzer targets run for a fixed number of iterations.
+# Long Monte-Carlo scenario tests (label "scenario") run in `make test` only: under the
+# sanitizers they take too long to be useful and exercise the same code as the short tests.
+sanitize: deps
+	CC=clang CXX=clang++ cmake -S . -B $(SAN_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Debug \
+	  -DNAVFUSE_SANITIZE=ON -DNAVFUSE_FUZZ=ON -DNAVFUSE_BENCH=OFF -DNAVFUSE_WERROR=$(WERROR)
+	cmake --build $(SAN_BUILD) -j $(JOBS)
+	cd $(SAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --output-on-failure -j $(JOBS) -LE scenario $(CTEST_ARGS)
+
+clean:
+	rm -rf build

@@ -1,0 +1,77 @@
+#include "core/bytes/checks.hpp"
+
+#include <array>
+
+namespace navfuse::bytes {
+namespace {
+
+// Slicing-by-8 tables for CRC-32: the FusionEngine framer checks every byte of every frame,
+// so the table-driven bytewise loop (~1 byte/cycle) would cap framing speed.
+struct Crc32Tables {
+  std::array<std::array<std::uint32_t, 256>, 8> t{};
+  constexpr Crc32Tables() {
+    for (std::uint32_t i = 0; i < 256; ++i) {
+      std::uint32_t c = i;
+      for (int k = 0; k < 8; ++k) c = (c & 1u) ? (0xEDB88320u ^ (c >> 1)) : (c >> 1);
+      t[0][i] = c;
+    }
+    for (std::uint32_t i = 0; i < 256; ++i)
+      for (std::size_t s = 1; s < 8; ++s) t[s][i] = (t[s - 1][i] >> 8) ^ t[0][t[s - 1][i] & 0xFFu];
+  }
+};
+constexpr Crc32Tables kCrc32{};
+
+struct Crc16Table {
+  std::array<std::uint16_t, 256> t{};
+  constexpr Crc16Table() {
+    for (std::uint32_t i = 0; i < 256; ++i) {
+      std::uint16_t c = static_cast<std::uint16_t>(i << 8);
+      for (int k = 0; k < 8; ++k)
+        c = (c & 0x8000u) ? static_cast<std::uint16_t>((c << 1) ^ 0x1021u) : static_cast<std::uint16_t>(c << 1);
+      t[i] = c;
+    }
+  }
+};
+constexpr Crc16Table kCrc16{};
+
+}  // namespace
+
+std::uint32_t crc32(std::span<const std::uint8_t> data, std::uint32_t previous) {
+  std::uint32_t c = ~previous;
+  const std::uint8_t* p = data.data();
+  std::size_t n = data.size();
+  const auto& t = kCrc32.t;
+  while (n >= 8) {
+    const std::uint32_t lo = c ^ (static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
+                                  static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24);
+    c = t[7][lo & 0xFF] ^ t[6][(lo >> 8) & 0xFF] ^ t[5][(lo >> 16) & 0xFF] ^ t[4][lo >> 24] ^
+        t[3][p[4]] ^ t[2][p[5]] ^ t[1][p[6]] ^ t[0][p[7]];
+    p += 8;
+    n -= 8;
+  }
+  while (n--) c = t[0][(c ^ *p++) & 0xFFu] ^ (c >> 8);
+  return ~c;
+}
+
+std::uint16_t crc16_xmodem(std::span<const std::uint8_t> data, std::uint16_t init) {
+  std::uint16_t c = init;
+  for (std::uint8_t b : data) c = static_cast<std::uint16_t>((c << 8) ^ kCrc16.t[((c >> 8) ^ b) & 0xFFu]);
+  return c;
+}
+
+std::uint16_t mip_fletcher(std::span<const std::uint8_t> data) {
+  std::uint8_t sum1 = 0, sum2 = 0;
+  for (std::uint8_t b : data) {
+    sum1 = static_cast<std::uint8_t>(sum1 + b);
+    sum2 = static_cast<std::uint8_t>(sum2 + sum1);
+  }
+  return static_cast<std::uint16_t>((sum1 << 8) | sum2);
+}
+
+std::uint8_t nmea_xor(std::span<const std::uint8_t> data) {
+  std::uint8_t x = 0;
+  for (std::uint8_t b : data) x ^= b;
+  return x;
+}
+
+}  // namespace navfuse::bytes
