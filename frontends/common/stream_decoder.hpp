@@ -56,6 +56,17 @@ class StreamDecoder {
   virtual const StreamCounters& counters() const = 0;
 };
 
+// Encodes core measurements the way the device itself emits them: used by `navfuse sim` to
+// write device logs from simulated truth, and by round-trip tests (decode(encode(m)) == m to the
+// protocol's resolution). Stateful (sequence numbers, message counters).
+class MeasurementEncoder {
+ public:
+  virtual ~MeasurementEncoder() = default;
+  // Appends the bytes for `m` to `out`. Returns false (and appends nothing) for a measurement
+  // kind this protocol cannot carry.
+  virtual bool encode(const Measurement& m, std::vector<std::uint8_t>& out) = 0;
+};
+
 // What a front-end registers with the apps.
 struct FrontendInfo {
   std::string_view format;       // "fe", "mip", "vn", "unicore"
@@ -64,6 +75,7 @@ struct FrontendInfo {
   // number of complete, checksum-valid frames found in it. 0 = not this protocol.
   std::size_t (*probe)(std::span<const std::uint8_t> head);
   std::unique_ptr<StreamDecoder> (*make_decoder)();
+  std::unique_ptr<MeasurementEncoder> (*make_encoder)();
 };
 
 }  // namespace navfuse::frontends
