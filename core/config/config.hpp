@@ -8,9 +8,11 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <variant>
 
 namespace navfuse::config {
 
@@ -46,6 +48,8 @@ struct OutputConfig {
   double rate_hz = 100;  // pose output rate (0 = every IMU sample)
 };
 
+// The in-class initialisers above are the DESIGN.md example values; the defaults a loaded config
+// actually starts from are defaults_for(profile) (core/config/device_profiles.cpp).
 struct Config {
   DeviceProfile device = DeviceProfile::kGeneric;
   ImuConfig imu;
@@ -66,5 +70,30 @@ Config defaults_for(DeviceProfile profile);
 // overrides them. `source_name` is used in error messages.
 Config load_from_string(const std::string& yaml_text, const std::string& source_name = "<config>");
 Config load_from_file(const std::string& path);
+
+// The effective configuration as YAML that load_from_string() reads back to an equal Config:
+// every key, in DESIGN.md order, each with a comment giving its meaning and unit. Numbers are
+// printed in shortest round-trip form, so nothing is lost.
+std::string to_yaml(const Config& config);
+
+// ---- The key table (core/config/config_keys.cpp) --------------------------------------------
+// Every YAML key except `device` is one row binding a dotted path to a Config member; the
+// loader, the unknown-key check and to_yaml() all walk this table, so adding a key is one row.
+
+enum class ValueCheck {
+  kAny,          // any finite number (angles, lever arms)
+  kNonNegative,  // >= 0 (noise densities, uncertainties, rates where 0 has a meaning)
+  kPositive,     // > 0 (correlation times)
+};
+
+struct KeyBinding {
+  std::string_view key;   // dotted YAML path, e.g. "imu.gyro_arw_deg_rthr"
+  std::string_view help;  // meaning and unit; printed as a comment by to_yaml()
+  ValueCheck check;
+  // Where the value lives: a scalar, or a fixed-length array of 3 (YAML flow sequence).
+  std::variant<double* (*)(Config&), Vec3* (*)(Config&)> target;
+};
+
+std::span<const KeyBinding> key_table();
 
 }  // namespace navfuse::config
