@@ -5,7 +5,8 @@
 // Noise model, per NED axis (horizontal sigma applies to north and east each):
 //   e = e_white + e_gm,  e_white ~ N(0, (1 - c) sigma^2),
 //   e_gm first-order Gauss-Markov with stationary variance c sigma^2 and correlation time tau
-//   (Groves §9.4.2 / §14.2.7: the slowly varying part of the ranging errors).
+//   (the slowly varying part of the ranging errors: ionosphere, troposphere, orbit/clock,
+//   multipath), discretised exactly like the IMU bias in imu_error_model.hpp.
 // The reported covariance is diag(sigma_h^2, sigma_h^2, sigma_v^2): the total stationary variance
 // of the generated error, so a filter's NEES on GNSS residuals is consistent (the correlated part
 // is of course not white; set c = 0 for a white-noise consistency test).
@@ -121,8 +122,8 @@ class GnssModel {
 };
 
 // Position of a point at `lever_arm_m` (vehicle frame) from the reference point of `truth`, and
-// its velocity in NED (v_n + C_nb (omega_eb_b x l), Groves eq. 14.121 with omega_eb = omega_ib -
-// C_bn omega_ie).
+// its velocity in NED (rigid-body lever-arm relation v_n + C_nb (omega_eb_b x l), with
+// omega_eb_b = omega_ib_b - C_bn omega_ie_n; Groves §14.3 loosely-coupled measurement model).
 geo::Llh lever_arm_position(const TruthSample& truth, const Eigen::Vector3d& lever_arm_m);
 Eigen::Vector3d lever_arm_velocity_ned(const TruthSample& truth, const Eigen::Vector3d& lever_arm_m);
 

@@ -1,16 +1,18 @@
 // IMU sensor errors: what turns the true increments of a perfect IMU into a real sensor's output.
 //
-// Per axis, in the sensor frame (IEEE Std 952-1997 Annex C / IEEE Std 1293 terminology):
+// Per axis, in the sensor frame (IEEE Std 952-1997 Annex C terminology; Groves §4.4 error
+// characteristics):
 //   output = (1 + scale_factor) * truth + bias * dt + noise          (increments)
 //   output = (1 + scale_factor) * truth + bias      + noise          (rates)
 //   bias   = turn_on_bias + b_gm
 // - Angle / velocity random walk (ARW, VRW): white rate noise of PSD N^2. Over an increment of
 //   length dt its integral has std N * sqrt(dt); a rate sample averaged over dt has std
-//   N / sqrt(dt) (IEEE 952 C.1; Groves eq. 4.14).
+//   N / sqrt(dt) (IEEE 952 C.1).
 // - Bias instability: modelled as a first-order Gauss-Markov process b_gm with stationary std
-//   equal to the bias instability figure and the given correlation time (Groves §14.2.7; the
-//   Allan-deviation floor of IEEE 952 C.2 is ~0.664 of a flicker process's sigma, a GM process is
-//   the usual finite-state stand-in and what the filter models), discretised exactly:
+//   equal to the bias instability figure and the given correlation time. (IEEE 952 C.2 defines
+//   bias instability as the flat floor of the Allan deviation, which for flicker noise is ~0.664
+//   of its sigma; a GM process is the usual finite-state stand-in and what the filter models.)
+//   Discretised exactly:
 //   b_k = e^(-dt/tau) b_(k-1) + sqrt(1 - e^(-2 dt/tau)) * sigma * w_k.
 // - Turn-on bias: a random constant per seed (N(0, std^2) per axis), the run-to-run bias.
 // - Scale factor: a random constant per seed and axis, N(0, (ppm * 1e-6)^2).

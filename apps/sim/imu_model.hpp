@@ -4,11 +4,11 @@
 // Increments follow the convention of core ImuSample (kIncrements: "coning/sculling done"), i.e.
 // what a device that integrates internally at a high rate reports:
 //   delta_theta = rotation vector of C_b(k-1)->b(k) relative to inertial space, computed exactly as
-//                 C_bn(k-1) C_ne(k-1) R_z(omega_ie dt) C_en(k) C_nb(k) (Groves §5.5.1: the body
-//                 attitude change w.r.t. the inertial frame);
+//                 C_bn(k-1) C_ne(k-1) R_z(omega_ie dt) C_en(k) C_nb(k): the body attitude change
+//                 w.r.t. the inertial frame, over which the earth turned by omega_ie dt;
 //   delta_v     = integral over the interval of C_b(k-1)b(t) f_ib_b(t) dt, by composite Simpson
-//                 over `substeps` truth nodes (Groves eq. 5.80's "specific force resolved in the
-//                 body frame at the start of the interval", which includes rotation / sculling).
+//                 over `substeps` truth nodes: specific force resolved in the body frame at the
+//                 start of the interval, which includes the rotation/sculling terms (Groves §5.5).
 // The alternative kRawIntegral (plain integrals of omega and f, as a sensor without internal
 // compensation outputs) is available to exercise a filter's own coning/sculling.
 #pragma once

@@ -60,8 +60,10 @@ class Simulator {
     Measurement measurement;
   };
   void step();  // generates IMU sample k and every other measurement stamped in its interval
-  void push(std::int64_t delivery_ns, const Measurement& m);
-  void sensor_events(const TruthSample& interval_start, std::int64_t t_end_ns);
+  void push(std::int64_t delivery_ns);  // queues scratch_
+  void sensor_events(std::int64_t t_end_ns);
+  TruthSample truth_in_interval(std::int64_t time_ns) const;
+  double seconds_since_start(std::int64_t time_ns) const;
 
   Scenario scenario_;
   Trajectory trajectory_;
@@ -71,6 +73,9 @@ class Simulator {
   std::int64_t end_time_ns_ = 0;
   std::int64_t imu_count_ = 0;
   std::int64_t k_ = 0;  // IMU samples generated so far
+  std::int64_t substep_ns_ = 0;
+  std::int64_t next_gnss_ns_ = 0;   // next epoch on the GNSS grid
+  std::int64_t next_wheel_ns_ = 0;  // next epoch on the wheel grid
   std::vector<TruthSample> nodes_;  // substep truth nodes of the current interval
   TruthSample initial_truth_;
   TruthSample imu_truth_;
@@ -78,8 +83,11 @@ class Simulator {
   std::size_t pending_head_ = 0;
   std::uint64_t order_ = 0;
   std::int64_t last_delivery_ns_ = 0;
-  // Scratch measurements reused for every epoch (no allocation in the loop).
+  // Scratch measurement reused for every output (no allocation in the loop).
   Measurement scratch_;
+  GnssPosition gnss_pos_;
+  GnssVelocity gnss_vel_;
+  GnssHeading gnss_heading_;
 };
 
 struct SimulationOutput {

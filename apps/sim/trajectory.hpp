@@ -6,12 +6,12 @@
 // the body x axis, v_b = [u, 0, 0], so v_n = u * [cos(theta) cos(psi), cos(theta) sin(psi),
 // -sin(theta)] and pitch is the climb (flight-path) angle. Speed u, yaw psi, pitch theta and roll
 // phi are smooth functions of time (see MotionSegment); position follows from integrating v_n on
-// the WGS-84 ellipsoid (Groves eqs. 2.111-2.113) with classical RK4.
+// the WGS-84 ellipsoid (curvilinear position rates, Groves §5.4) with classical RK4.
 //
-// Inertial quantities (Groves, 2nd ed.):
-//   omega_ib_b = omega_nb_b + C_bn (omega_ie_n + omega_en_n)            (eq. 5.37 rearranged)
-//   f_ib_b     = C_bn [ dv_n/dt - g_n + (omega_en_n + 2 omega_ie_n) x v_n ]  (eq. 5.54 solved for f)
-// with omega_nb_b from the Euler-angle rates (Titterton & Weston eq. 3.44), earth and transport
+// Inertial quantities (the local-navigation-frame equations of Groves 2nd ed. §5.4, inverted):
+//   omega_ib_b = omega_nb_b + C_bn (omega_ie_n + omega_en_n)            (attitude update)
+//   f_ib_b     = C_bn [ dv_n/dt - g_n + (omega_en_n + 2 omega_ie_n) x v_n ]  (velocity update)
+// with omega_nb_b from the 3-2-1 Euler-angle rates (Titterton & Weston §3.6), earth and transport
 // rates from core/geodesy (eqs. 5.41, 5.44) and normal gravity g_n (gravitation plus centrifugal)
 // from core/geodesy/gravity.hpp. A strapdown integrator fed with these reproduces the truth.
 #pragma once

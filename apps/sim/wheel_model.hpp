@@ -3,8 +3,8 @@
 //
 // Speed of a point P at lever arm l (vehicle frame) relative to the earth, in the vehicle frame:
 //   v_P = v_b + omega_eb_b x l,  v_b = C_bn v_n,  omega_eb_b = omega_ib_b - C_bn omega_ie_n
-// (Groves eq. 16.16 for odometry lever arms). VehicleSpeed reports the body-x component of v_P
-// at `lever_arm_m` (e.g. the rear axle centre). WheelSpeeds reports, for each wheel contact point,
+// (the rigid-body lever-arm relation, as for odometry in Groves §6.3). VehicleSpeed reports the
+// body-x component of v_P at `lever_arm_m` (e.g. the rear axle centre). WheelSpeeds reports, for each wheel contact point,
 // the horizontal speed magnitude (steered front wheels roll along their own velocity) with the
 // sign of its body-x component: rear wheels at lever_arm_m +- track/2 laterally, front wheels
 // `wheelbase_m` further forward.
