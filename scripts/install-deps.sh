@@ -7,7 +7,7 @@ packages=(
   cmake ninja-build g++ make pkg-config ccache
   clang libclang-rt-14-dev            # libFuzzer targets and the sanitizer build
   libeigen3-dev libgeographiclib-dev libceres-dev
-  liblcm-dev liblcm-bin libglib2.0-dev libyaml-cpp-dev libcli11-dev  # lcm.pc requires glib
+  liblcm-dev liblcm-bin libglib2.0-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
   proj-data                           # /usr/share/proj/egm96_15.gtx, the EGM96 geoid grid
   python3 python3-venv python3-pip    # FusionEngine client compatibility test

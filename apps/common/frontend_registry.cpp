@@ -1,0 +1,42 @@
+#include "apps/common/frontend_registry.hpp"
+
+namespace navfuse::apps {
+
+const std::vector<const frontends::FrontendInfo*>& frontends_list() {
+  static const std::vector<const frontends::FrontendInfo*> list = [] {
+    std::vector<const frontends::FrontendInfo*> l;
+    return l;
+  }();
+  return list;
+}
+
+const frontends::FrontendInfo* find_frontend(std::string_view format) {
+  for (const auto* f : frontends_list()) {
+    if (f->format == format) return f;
+  }
+  return nullptr;
+}
+
+std::string known_formats() {
+  std::string s;
+  for (const auto* f : frontends_list()) {
+    if (!s.empty()) s += ", ";
+    s += f->format;
+  }
+  return s.empty() ? std::string("(none)") : s;
+}
+
+const frontends::FrontendInfo* detect_format(std::span<const std::uint8_t> head) {
+  const frontends::FrontendInfo* best = nullptr;
+  std::size_t best_frames = 0;
+  for (const auto* f : frontends_list()) {
+    const std::size_t n = f->probe(head);
+    if (n > best_frames) {
+      best = f;
+      best_frames = n;
+    }
+  }
+  return best;
+}
+
+}  // namespace navfuse::apps

@@ -1,0 +1,47 @@
+#include "apps/common/input_spec.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <vector>
+
+#include "apps/common/command_error.hpp"
+#include "apps/common/frontend_registry.hpp"
+
+namespace navfuse::apps {
+
+InputSpec resolve_input(const std::string& argument) {
+  InputSpec spec;
+  spec.path = argument;
+  // A prefix is a known format name before the first ':' (paths may contain ':' too, so an
+  // unknown short word is only an error when it looks like a format, i.e. has no '/').
+  const auto colon = argument.find(':');
+  if (colon != std::string::npos && colon > 0) {
+    const std::string prefix = argument.substr(0, colon);
+    if (const auto* f = find_frontend(prefix)) {
+      spec.frontend = f;
+      spec.path = argument.substr(colon + 1);
+    } else if (prefix.find('/') == std::string::npos && prefix.size() <= 8) {
+      throw CommandError("unknown input format '" + prefix + "' in '" + argument + "' (known: " +
+                         known_formats() + ")");
+    }
+  }
+  std::ifstream in(spec.path, std::ios::binary);
+  if (!in) throw CommandError("cannot open input '" + spec.path + "': " + std::strerror(errno));
+  std::vector<std::uint8_t> head(kProbeBytes);
+  in.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  if (head.empty()) throw CommandError("input '" + spec.path + "' is empty");
+  if (!spec.frontend) {
+    spec.frontend = detect_format(head);
+    spec.format_detected = true;
+    if (!spec.frontend) {
+      throw CommandError("cannot detect the format of '" + spec.path + "': no valid frame of " +
+                         known_formats() + " in its first " + std::to_string(head.size()) +
+                         " bytes (give it as FORMAT:PATH)");
+    }
+  }
+  return spec;
+}
+
+}  // namespace navfuse::apps

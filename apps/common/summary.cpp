@@ -1,0 +1,96 @@
+#include "apps/common/summary.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+
+#include "apps/common/command_error.hpp"
+
+namespace navfuse::apps {
+
+nlohmann::ordered_json Summary::to_json(bool decode_only) const {
+  nlohmann::ordered_json j;
+  j["inputs"] = nlohmann::ordered_json::array();
+  for (const auto& in : inputs) {
+    j["inputs"].push_back({{"path", in.path},
+                           {"format", in.format},
+                           {"bytes", in.counters.bytes},
+                           {"frames", in.counters.frames},
+                           {"bad_frames", in.counters.bad_frames},
+                           {"skipped_bytes", in.counters.skipped_bytes},
+                           {"unknown_frames", in.counters.unknown_frames},
+                           {"decode_errors", in.counters.decode_errors}});
+  }
+  nlohmann::ordered_json m = nlohmann::ordered_json::object();
+  for (std::size_t k = 0; k < kinds.size(); ++k) {
+    const auto& ks = kinds[k];
+    nlohmann::ordered_json e;
+    e["decoded"] = ks.decoded;
+    if (!decode_only) {
+      e["used"] = ks.used;
+      e["rejected"] = nlohmann::ordered_json::object();
+      for (const auto& [reason, n] : ks.rejected) e["rejected"][reason] = n;
+    }
+    m[std::string(to_string(static_cast<MeasurementKind>(k)))] = e;
+  }
+  j["measurements"] = m;
+  if (run) {
+    j["run"] = {{"wall_s", run->wall_s},
+                {"imu_samples_per_s", run->imu_samples_per_s},
+                {"modes_reached", run->modes_reached}};
+  }
+  for (const auto& [key, value] : extra.items()) j[key] = value;
+  return j;
+}
+
+void Summary::print(std::ostream& os, bool decode_only) const {
+  for (const auto& in : inputs) {
+    const auto& c = in.counters;
+    os << in.path << " [" << in.format << "]: " << c.bytes << " bytes, " << c.frames << " frames, "
+       << c.bad_frames << " bad frames, " << c.skipped_bytes << " bytes skipped";
+    if (c.unknown_frames) os << ", " << c.unknown_frames << " unknown frames";
+    if (c.decode_errors) os << ", " << c.decode_errors << " decode errors";
+    os << "\n";
+  }
+  os << "measurements:\n";
+  for (std::size_t k = 0; k < kinds.size(); ++k) {
+    const auto& ks = kinds[k];
+    std::uint64_t rejected = 0;
+    for (const auto& [reason, n] : ks.rejected) rejected += n;
+    if (ks.decoded == 0 && ks.used == 0 && rejected == 0) continue;
+    os << "  " << std::left << std::setw(18) << to_string(static_cast<MeasurementKind>(k)) << std::right
+       << " decoded " << std::setw(8) << ks.decoded;
+    if (!decode_only) {
+      os << "  used " << std::setw(8) << ks.used << "  rejected " << std::setw(6) << rejected;
+      bool first = true;
+      for (const auto& [reason, n] : ks.rejected) {
+        os << (first ? " (" : ", ") << reason << ": " << n;
+        first = false;
+      }
+      if (!first) os << ")";
+    }
+    os << "\n";
+  }
+  if (run) {
+    os << "run: " << std::fixed << std::setprecision(3) << run->wall_s << " s wall, " << std::setprecision(0)
+       << run->imu_samples_per_s << " IMU samples/s; modes reached:";
+    for (const auto& mode : run->modes_reached) os << " " << mode;
+    os << "\n" << std::defaultfloat;
+  }
+}
+
+void write_json_file(const std::string& path, const nlohmann::ordered_json& j) {
+  const std::string tmp = path + ".partial";
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    if (!out) throw CommandError("cannot write '" + path + "'");
+    out << j.dump(2) << "\n";
+    if (!out.flush()) throw CommandError("cannot write '" + path + "'");
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw CommandError("cannot write '" + path + "'");
+  }
+}
+
+}  // namespace navfuse::apps

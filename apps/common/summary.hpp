@@ -1,0 +1,57 @@
+// The run summary of `navfuse decode` / `replay` / `bench`: per input stream counters, per
+// measurement kind decoded / used / rejected-by-reason, and run statistics. Printed as text and
+// written as JSON with the DESIGN.md keys (contract): inputs[] {path, format, bytes, frames,
+// bad_frames, skipped_bytes}, measurements {kind: {decoded, used, rejected{reason: n}}},
+// run {wall_s, imu_samples_per_s, modes_reached}.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/measurements/measurements.hpp"
+#include "frontends/common/stream_decoder.hpp"
+
+namespace navfuse::apps {
+
+struct InputSummary {
+  std::string path;
+  std::string format;
+  frontends::StreamCounters counters;
+};
+
+struct KindSummary {
+  std::uint64_t decoded = 0;
+  std::uint64_t used = 0;
+  std::map<std::string, std::uint64_t> rejected;  // ordered: deterministic output
+};
+
+struct RunStats {
+  double wall_s = 0.0;
+  double imu_samples_per_s = 0.0;
+  std::vector<std::string> modes_reached;
+};
+
+struct Summary {
+  std::vector<InputSummary> inputs;
+  std::array<KindSummary, static_cast<std::size_t>(MeasurementKind::kCount)> kinds{};
+  std::optional<RunStats> run;  // absent for `decode`
+  // Extra top-level sections (e.g. accuracy against truth) added by commands.
+  nlohmann::ordered_json extra = nlohmann::ordered_json::object();
+
+  KindSummary& kind(MeasurementKind k) { return kinds[static_cast<std::size_t>(k)]; }
+  nlohmann::ordered_json to_json(bool decode_only) const;
+  void print(std::ostream& os, bool decode_only) const;
+};
+
+// Writes JSON to `path` atomically (temporary file + rename), so a reader never sees a
+// half-written summary; throws CommandError on failure.
+void write_json_file(const std::string& path, const nlohmann::ordered_json& j);
+
+}  // namespace navfuse::apps

@@ -1,0 +1,178 @@
+#include "apps/decode/decode_command.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "apps/common/command_error.hpp"
+#include "apps/common/input_spec.hpp"
+#include "apps/common/measurement_fields.hpp"
+#include "apps/common/summary.hpp"
+
+namespace navfuse::apps {
+namespace {
+
+struct DecodeOptions {
+  std::string input;
+  std::string format = "csv";
+  std::string out_path;  // empty: stdout
+  std::string summary_json;
+};
+
+// CSV in long ("tidy") form, one row per field, because frames of different types have
+// different fields: record,offset,protocol,name,field,value.
+void write_csv_field(std::ostream& os, const std::string& value) {
+  if (value.find_first_of(",\"\n") == std::string::npos) {
+    os << value;
+    return;
+  }
+  os << '"';
+  for (char c : value) {
+    if (c == '"') os << '"';
+    os << c;
+  }
+  os << '"';
+}
+
+std::string value_text(const frontends::FieldValue& v) {
+  return std::visit(
+      [](const auto& x) -> std::string {
+        using T = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<T, std::string>) {
+          return x;
+        } else if constexpr (std::is_same_v<T, double>) {
+          char buf[32];
+          std::snprintf(buf, sizeof buf, "%.17g", x);
+          return buf;
+        } else {
+          return std::to_string(x);
+        }
+      },
+      v);
+}
+
+nlohmann::ordered_json value_json(const frontends::FieldValue& v) {
+  return std::visit([](const auto& x) -> nlohmann::ordered_json {
+    using T = std::decay_t<decltype(x)>;
+    if constexpr (std::is_same_v<T, double>) {
+      if (!std::isfinite(x)) return nullptr;  // JSON has no NaN
+    }
+    return x;
+  }, v);
+}
+
+class PrintingSink final : public frontends::DecodeSink {
+ public:
+  PrintingSink(std::ostream& os, bool jsonl, Summary& summary) : os_(os), jsonl_(jsonl), summary_(summary) {
+    if (!jsonl_) os_ << "record,offset,protocol,name,field,value\n";
+  }
+  bool wants_frames() const override { return true; }
+  void on_frame(const frontends::FrameRecord& f) override {
+    last_offset_ = f.offset;
+    emit("frame", f);
+  }
+  void on_measurement(const Measurement& m) override {
+    ++summary_.kind(kind_of(m)).decoded;
+    record_.protocol = protocol_;
+    record_.offset = last_offset_;
+    measurement_to_record(m, record_);
+    emit("measurement", record_);
+  }
+  std::string_view protocol_;
+
+ private:
+  void emit(const char* type, const frontends::FrameRecord& r) {
+    if (jsonl_) {
+      nlohmann::ordered_json j;
+      j["record"] = type;
+      j["offset"] = r.offset;
+      j["protocol"] = r.protocol;
+      j["name"] = r.name;
+      nlohmann::ordered_json fields = nlohmann::ordered_json::object();
+      for (const auto& [k, v] : r.fields) fields[k] = value_json(v);
+      j["fields"] = fields;
+      os_ << j.dump() << '\n';
+      return;
+    }
+    for (const auto& [k, v] : r.fields) {
+      os_ << type << ',' << r.offset << ',' << r.protocol << ',';
+      write_csv_field(os_, r.name);
+      os_ << ',';
+      write_csv_field(os_, k);
+      os_ << ',';
+      write_csv_field(os_, value_text(v));
+      os_ << '\n';
+    }
+  }
+
+  std::ostream& os_;
+  bool jsonl_;
+  Summary& summary_;
+  frontends::FrameRecord record_;
+  std::uint64_t last_offset_ = 0;
+};
+
+int run_decode(const DecodeOptions& opt) {
+  const InputSpec spec = resolve_input(opt.input);
+  std::ifstream in(spec.path, std::ios::binary);
+  if (!in) throw CommandError("cannot open input '" + spec.path + "'");
+
+  std::ofstream file_out;
+  std::string partial_path;
+  if (!opt.out_path.empty()) {
+    // Write to a temporary name and rename at the end: an interrupted decode never leaves a
+    // file that looks complete.
+    partial_path = opt.out_path + ".partial";
+    file_out.open(partial_path, std::ios::trunc);
+    if (!file_out) throw CommandError("cannot write '" + opt.out_path + "'");
+  }
+  std::ostream& os = opt.out_path.empty() ? std::cout : file_out;
+
+  Summary summary;
+  auto decoder = spec.frontend->make_decoder();
+  PrintingSink sink(os, opt.format == "jsonl", summary);
+  sink.protocol_ = spec.frontend->format;
+  std::vector<std::uint8_t> chunk(1 << 20);
+  while (in) {
+    in.read(reinterpret_cast<char*>(chunk.data()), static_cast<std::streamsize>(chunk.size()));
+    const auto n = static_cast<std::size_t>(in.gcount());
+    if (n == 0) break;
+    decoder->feed(std::span(chunk.data(), n), sink);
+  }
+  if (in.bad()) throw CommandError("read error on '" + spec.path + "'");
+  decoder->finish(sink);
+  os.flush();
+  if (!opt.out_path.empty()) {
+    file_out.close();
+    if (!file_out || std::rename(partial_path.c_str(), opt.out_path.c_str()) != 0) {
+      std::remove(partial_path.c_str());
+      throw CommandError("cannot write '" + opt.out_path + "'");
+    }
+  }
+
+  summary.inputs.push_back({spec.path, std::string(spec.frontend->format), decoder->counters()});
+  if (!opt.summary_json.empty()) write_json_file(opt.summary_json, summary.to_json(/*decode_only=*/true));
+  if (!opt.out_path.empty()) summary.print(std::cerr, /*decode_only=*/true);
+  return 0;
+}
+
+}  // namespace
+
+void add_decode_command(CLI::App& root, int& exit_code) {
+  auto opt = std::make_shared<DecodeOptions>();
+  CLI::App* sub = root.add_subcommand("decode", "Decode a log: every frame and the normalised measurements");
+  sub->add_option("INPUT", opt->input, "[FORMAT:]PATH; FORMAT one of fe, mip, vn, unicore (detected when omitted)")
+      ->required();
+  sub->add_option("--format", opt->format, "Output format")->check(CLI::IsMember({"csv", "jsonl"}));
+  sub->add_option("-o,--out", opt->out_path, "Write the records to this file instead of stdout");
+  sub->add_option("--summary-json", opt->summary_json, "Write the counters as JSON to this file");
+  sub->callback([opt, &exit_code] { exit_code = run_decode(*opt); });
+}
+
+}  // namespace navfuse::apps

@@ -1,0 +1,28 @@
+// navfuse: GNSS/INS fusion engine command line. Subcommands (DESIGN.md, contract): replay, run,
+// decode, bench, aid, sim. Each lives in apps/<name>/ and registers itself here.
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "apps/common/command_error.hpp"
+#include "apps/decode/decode_command.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"navfuse: loosely-coupled GNSS/INS fusion engine"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "navfuse 0.1.0");
+  int exit_code = 0;
+  navfuse::apps::add_decode_command(app, exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const navfuse::apps::CommandError& e) {
+    std::cerr << "navfuse: error: " << e.what() << "\n";
+    return e.exit_code();
+  } catch (const std::exception& e) {
+    std::cerr << "navfuse: error: " << e.what() << "\n";
+    return 1;
+  }
+  return exit_code;
+}
