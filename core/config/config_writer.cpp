@@ -49,8 +49,10 @@ std::string to_yaml(const Config& config) {
       out += format_number(*(*scalar)(copy));
     } else {
       const Vec3& v = *std::get<Vec3* (*)(Config&)>(binding.target)(copy);
-      out += "[" + format_number(v[0]) + ", " + format_number(v[1]) + ", " + format_number(v[2]) +
-             "]";
+      // Appended piecewise: `"[" + std::string` trips GCC 12's false -Wrestrict (GCC bug 105329).
+      out += '[';
+      out += format_number(v[0]) + ", " + format_number(v[1]) + ", " + format_number(v[2]);
+      out += ']';
     }
     out += "  # " + std::string(binding.help) + "\n";
   }
