@@ -40,7 +40,7 @@ bench: configure
 # Long Monte-Carlo scenario tests (label "scenario") run in `make test` only: under the
 # sanitizers they take too long to be useful and exercise the same code as the short tests.
 sanitize: deps
-	CC=clang CXX=clang++ cmake -S . -B $(SAN_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Debug \
+	CC=clang CXX=clang++ cmake -S . -B $(SAN_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DNAVFUSE_SANITIZE=ON -DNAVFUSE_FUZZ=ON -DNAVFUSE_BENCH=OFF -DNAVFUSE_WERROR=$(WERROR)
 	cmake --build $(SAN_BUILD) -j $(JOBS)
 	cd $(SAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
