@@ -43,7 +43,7 @@ ImuModel::ImuModel(const ImuSpec& spec, std::uint64_t seed)
   }
   const double period_ns = 1e9 / spec_.rate_hz;
   period_ns_ = static_cast<std::int64_t>(std::llround(period_ns));
-  if (std::abs(period_ns - static_cast<double>(period_ns_)) > 1e-6 * period_ns) {
+  if (std::abs(period_ns - static_cast<double>(period_ns_)) > 1e-3) {
     throw std::invalid_argument("imu.rate_hz: the period must be a whole number of nanoseconds");
   }
   if (spec_.substeps < 2 || spec_.substeps % 2 != 0) {

@@ -24,7 +24,7 @@ WheelModel::WheelModel(const WheelSpec& spec, std::uint64_t seed)
     }
     const double period_ns = 1e9 / spec_.rate_hz;
     period_ns_ = static_cast<std::int64_t>(std::llround(period_ns));
-    if (std::abs(period_ns - static_cast<double>(period_ns_)) > 1e-6 * period_ns) {
+    if (std::abs(period_ns - static_cast<double>(period_ns_)) > 1e-3) {
       throw std::invalid_argument("wheel.rate_hz: the period must be a whole number of nanoseconds");
     }
   }
