@@ -1,0 +1,41 @@
+#include "frontends/vectornav/frontend.hpp"
+
+#include "frontends/vectornav/port_framer.hpp"
+#include "frontends/vectornav/vn_measurement_encoder.hpp"
+#include "frontends/vectornav/vn_stream_decoder.hpp"
+
+namespace navfuse::frontends {
+namespace vn {
+namespace {
+constexpr std::string_view kAsciiVectorNav = "$VN";
+}
+
+std::size_t probe_vectornav(std::span<const std::uint8_t> head) {
+  PortFramer framer;
+  std::size_t count = 0;
+  auto on_frame = [&](const Frame& f) {
+    if (f.kind != FrameKind::kAscii) {
+      ++count;
+      return;
+    }
+    const std::string_view text(reinterpret_cast<const char*>(f.bytes.data()), f.bytes.size());
+    if (text.starts_with(kAsciiVectorNav)) ++count;
+  };
+  framer.feed(head, on_frame);
+  return count;
+}
+
+}  // namespace vn
+
+const FrontendInfo& vectornav_frontend() {
+  static const FrontendInfo info{
+      "vn",
+      "VectorNav VN-300 binary (0xFA/0xFB) and ASCII ($VN) output",
+      &vn::probe_vectornav,
+      []() -> std::unique_ptr<StreamDecoder> { return std::make_unique<vn::VnStreamDecoder>(); },
+      []() -> std::unique_ptr<MeasurementEncoder> { return std::make_unique<vn::VnMeasurementEncoder>(); },
+  };
+  return info;
+}
+
+}  // namespace navfuse::frontends

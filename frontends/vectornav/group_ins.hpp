@@ -1,0 +1,38 @@
+// INS group (group bit 5; ICD Table 2.75, L1656-1831; digest §5.6).
+#pragma once
+
+#include "frontends/vectornav/binary_message.hpp"
+#include "frontends/vectornav/field_io.hpp"
+
+namespace navfuse::frontends::vn {
+
+namespace ins_names {
+inline constexpr Names3 kPosLla = {"lat_deg", "lon_deg", "height_m"};
+inline constexpr Names3 kPosEcef = {"ecef_x_m", "ecef_y_m", "ecef_z_m"};
+inline constexpr Names3 kVelBody = {"vel_x_mps", "vel_y_mps", "vel_z_mps"};
+inline constexpr Names3 kVelNed = {"vel_n_mps", "vel_e_mps", "vel_d_mps"};
+inline constexpr Names3 kVelEcef = {"vel_ecef_x_mps", "vel_ecef_y_mps", "vel_ecef_z_mps"};
+inline constexpr Names3 kMagEcef = {"mag_ecef_x_gauss", "mag_ecef_y_gauss", "mag_ecef_z_gauss"};
+inline constexpr Names3 kAccelEcef = {"accel_ecef_x_mps2", "accel_ecef_y_mps2", "accel_ecef_z_mps2"};
+inline constexpr Names3 kLinEcef = {"lin_accel_ecef_x_mps2", "lin_accel_ecef_y_mps2", "lin_accel_ecef_z_mps2"};
+}  // namespace ins_names
+
+template <class Io>
+void visit_ins_type(unsigned bit, Io& io, InsFields& f) {
+  switch (bit) {
+    case ins_type::kInsStatus: io.field("ins_status", f.ins_status); break;
+    case ins_type::kPosLla: io.fields(ins_names::kPosLla, f.pos_lla); break;
+    case ins_type::kPosEcef: io.fields(ins_names::kPosEcef, f.pos_ecef_m); break;
+    case ins_type::kVelBody: io.fields(ins_names::kVelBody, f.vel_body_mps); break;
+    case ins_type::kVelNed: io.fields(ins_names::kVelNed, f.vel_ned_mps); break;
+    case ins_type::kVelEcef: io.fields(ins_names::kVelEcef, f.vel_ecef_mps); break;
+    case ins_type::kMagEcef: io.fields(ins_names::kMagEcef, f.mag_ecef_gauss); break;
+    case ins_type::kAccelEcef: io.fields(ins_names::kAccelEcef, f.accel_ecef_mps2); break;
+    case ins_type::kLinAccelEcef: io.fields(ins_names::kLinEcef, f.lin_accel_ecef_mps2); break;
+    case ins_type::kPosU: io.field("pos_std_m", f.pos_uncertainty_m); break;
+    case ins_type::kVelU: io.field("vel_std_mps", f.vel_uncertainty_mps); break;
+    default: break;
+  }
+}
+
+}  // namespace navfuse::frontends::vn
