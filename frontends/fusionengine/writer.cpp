@@ -1,0 +1,56 @@
+#include "frontends/fusionengine/writer.hpp"
+
+
+#include "core/bytes/byte_writer.hpp"
+#include "core/bytes/checks.hpp"
+
+namespace navfuse::fe {
+
+std::uint32_t default_source_id(std::uint16_t message_type) {
+  switch (static_cast<MessageType>(message_type)) {
+    case MessageType::kImuInput:
+    case MessageType::kWheelTickInput:
+    case MessageType::kVehicleTickInput:
+    case MessageType::kWheelSpeedInput:
+    case MessageType::kVehicleSpeedInput:
+      return kSourceIdMeasurementInput;
+    default:
+      return kSourceIdInvalid;
+  }
+}
+
+std::size_t begin_frame(std::vector<std::uint8_t>& out, std::uint16_t message_type, std::uint8_t message_version,
+                        std::uint32_t sequence, std::uint32_t source_id) {
+  const std::size_t start = out.size();
+  bytes::LeWriter w(out);
+  w.u8(kSync0);
+  w.u8(kSync1);
+  w.u16(0);  // reserved
+  w.u32(0);  // CRC: end_frame()
+  w.u8(kProtocolVersion);
+  w.u8(message_version);
+  w.u16(message_type);
+  w.u32(sequence);
+  w.u32(0);  // payload size: end_frame()
+  w.u32(source_id);
+  return start;
+}
+
+void end_frame(std::vector<std::uint8_t>& out, std::size_t start) {
+  bytes::LeWriter w(out);
+  w.patch(start + kPayloadSizeOffset, static_cast<std::uint32_t>(out.size() - start - kHeaderSize));
+  // The CRC covers bytes [8, end), not the CRC field itself (spec L186).
+  w.patch(start + kCrcOffset,
+          bytes::crc32({out.data() + start + kCrcCoveredFrom, out.size() - start - kCrcCoveredFrom}));
+}
+
+const std::vector<std::uint8_t>& FusionEngineWriter::imu_output(const ImuSample& imu) {
+  ImuOutputMessage m;
+  if (!imu_output_from(imu, m)) {
+    buffer_.clear();
+    return buffer_;
+  }
+  return frame(m);
+}
+
+}  // namespace navfuse::fe
