@@ -6,9 +6,11 @@
 //    interval) and delivered at their stamp.
 //  - GNSS and wheel measurements are taken on their own GPS-time grids (multiples of 1/rate) and
 //    delivered `latency_s` after their stamp; header.time_ns is always the true measurement time.
-//  - Ordering is by delivery time; at equal delivery times the IMU sample comes first, then the
-//    others in the order they were generated (GNSS position, velocity, heading, vehicle speed,
-//    wheel speeds). Measurements still in flight when the trajectory ends are not delivered.
+//  - Ordering is by delivery time; equal delivery times keep generation order, so the older
+//    measurement goes first: without latency the IMU sample at t precedes the GNSS fix stamped at
+//    t, while a fix delayed to arrive at t precedes the IMU sample at t. Within one epoch the
+//    order is GNSS position, velocity, heading, then vehicle speed, wheel speeds. Measurements
+//    still in flight when the trajectory ends are not delivered.
 //
 // Usage, streaming (no heap allocation per IMU sample once running):
 //   Simulator sim(make_scenario("drive_outage"));

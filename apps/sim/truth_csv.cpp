@@ -21,13 +21,15 @@ void TruthCsvWriter::write(const TruthSample& s) {
   // and the time printed from integer ns so that it is exact.
   const std::int64_t sec = s.time_ns / time::kNsPerSecond;
   const std::int64_t frac = s.time_ns % time::kNsPerSecond;
-  const Eigen::Vector3d rpy = s.rpy_rad * rot::kRadToDeg;
+  // Adding +0.0 turns a negative zero (e.g. -sin(pitch) * 0 m/s) into +0, so rest prints "0.0".
+  const Eigen::Vector3d rpy = s.rpy_rad * rot::kRadToDeg + Eigen::Vector3d::Zero();
+  const Eigen::Vector3d v = s.vel_ned_mps + Eigen::Vector3d::Zero();
   char line[320];
   const int n = std::snprintf(
       line, sizeof line,
       "%" PRId64 ".%09" PRId64 ",%.10f,%.10f,%.4f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f,%d,%d\n", sec, frac,
       s.llh.lat_rad * rot::kRadToDeg, s.llh.lon_rad * rot::kRadToDeg, s.llh.height_m,
-      s.vel_ned_mps.x(), s.vel_ned_mps.y(), s.vel_ned_mps.z(), rpy.x(), rpy.y(), rpy.z(),
+      v.x(), v.y(), v.z(), rpy.x(), rpy.y(), rpy.z(),
       s.stationary ? 1 : 0, s.gnss_available ? 1 : 0);
   if (n > 0) out_.write(line, std::min<std::streamsize>(n, static_cast<std::streamsize>(sizeof line) - 1));
 }
