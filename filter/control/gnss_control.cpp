@@ -1,0 +1,139 @@
+#include "filter/control/gnss_control.hpp"
+
+#include <cmath>
+
+#include "filter/alignment.hpp"
+#include "filter/measurements/gnss_heading.hpp"
+#include "filter/measurements/gnss_position.hpp"
+#include "filter/measurements/gnss_velocity.hpp"
+
+namespace navfuse::filter {
+namespace {
+
+bool has_position_fix(GnssFixType fix) {
+  return fix != GnssFixType::kNone && fix != GnssFixType::kTimeOnly &&
+         fix != GnssFixType::kDeadReckoning;
+}
+
+// A fix newer than this is used to place the filter when the heading becomes known.
+constexpr double kMaxPlacementAge_s = 1.0;
+
+// Tracks a run of rejections; true when it has lasted long enough to re-anchor.
+bool sustained_rejection(std::int64_t now, std::int64_t& reject_since, std::int64_t last_accepted,
+                         double recovery_s) {
+  if (reject_since == INT64_MIN) reject_since = now;
+  return seconds_since(now, reject_since) >= recovery_s &&
+         seconds_since(now, last_accepted) >= recovery_s;
+}
+
+}  // namespace
+
+FuseResult fuse_gnss_position(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
+                              double shift_s) {
+  if (!has_position_fix(m.fix)) return FuseResult::reject(RejectReason::kNoFix);
+  if ((m.header.valid & GnssPosition::kValidPosition) == 0) return FuseResult::reject(RejectReason::kInvalid);
+  const std::int64_t now = m.header.time_ns;
+  c.gnss.latest_fix = m;
+  c.gnss.have_fix = true;
+  c.gnss.last_fix = m.fix;
+  if (!c.mode.levelled) return FuseResult::reject(RejectReason::kNotAligned);
+  if (!c.mode.heading_known || !c.mode.position_known) {
+    // The first fix places the filter. Without a heading the lever arm cannot be resolved and
+    // any velocity error is unmodelled: hold the position at the fix (inflated by the lever arm)
+    // instead of filtering.
+    place_at_fix(c, o, m);
+    c.gnss.last_position_ns = now;
+    return FuseResult::ok();
+  }
+
+  const Observation obs = gnss_position_observation(c.view(shift_s), m);
+  const FuseResult r = c.apply(o, obs, c.gate_for(o, obs.rows()));
+  if (r.used) {
+    c.gnss.last_position_ns = now;
+    c.gnss.position_reject_since_ns = INT64_MIN;
+    c.mode.position_known = true;
+    c.mode.last_absolute_position_ns = now;
+    return r;
+  }
+  if (r.reason == RejectReason::kChi2Gate &&
+      sustained_rejection(now, c.gnss.position_reject_since_ns, c.gnss.last_position_ns,
+                          o.gnss_recovery_s)) {
+    place_at_fix(c, o, m);
+    // The velocity that carried the filter away is suspect too: widen it so the next velocity
+    // fixes pull it in.
+    c.ekf.reset_states(sx::kVel, 3, 1.0);
+    c.gnss.last_position_ns = now;
+    c.gnss.position_reject_since_ns = INT64_MIN;
+    ++c.mode.gnss_recoveries;
+    return FuseResult::ok();
+  }
+  return r;
+}
+
+FuseResult fuse_gnss_velocity(FilterCore& c, const FilterOptions& o, const GnssVelocity& m,
+                              double shift_s) {
+  if (!has_position_fix(m.fix)) return FuseResult::reject(RejectReason::kNoFix);
+  if ((m.header.valid & GnssVelocity::kValidVelocity) == 0) return FuseResult::reject(RejectReason::kInvalid);
+  const std::int64_t now = m.header.time_ns;
+  const double speed = m.vel_ned_mps.head<2>().norm();
+  c.gnss.last_speed_mps = speed;
+  c.gnss.last_speed_ns = now;
+  if (!c.mode.levelled) return FuseResult::reject(RejectReason::kNotAligned);
+  const Eigen::Matrix3d cov = (m.header.valid & GnssVelocity::kValidCovariance) != 0
+                                  ? m.cov_ned_m2ps2
+                                  : Eigen::Matrix3d(Eigen::Vector3d(0.01, 0.01, 0.04).asDiagonal());
+  if (!c.mode.heading_known) {
+    c.x.vel_ned_mps = m.vel_ned_mps;
+    c.ekf.reset_states(sx::kVel, cov);
+    c.gnss.last_velocity_ns = now;
+    if (speed >= o.kinematic_alignment_speed_mps) {
+      // Kinematic alignment (MIP §6.4): a land vehicle moving forward points along its course.
+      // The yaw uncertainty is the course noise plus an allowance for sideslip and mounting.
+      const double course_std = std::sqrt(0.5 * (cov(0, 0) + cov(1, 1))) / speed;
+      set_heading(c, std::atan2(m.vel_ned_mps.y(), m.vel_ned_mps.x()),
+                  std::hypot(course_std, o.kinematic_heading_std_rad));
+      if (c.gnss.have_fix &&
+          std::abs(seconds_since(c.x.time_ns, c.gnss.latest_fix.header.time_ns)) < kMaxPlacementAge_s) {
+        place_at_fix(c, o, c.gnss.latest_fix);
+      }
+    }
+    return FuseResult::ok();
+  }
+
+  Observation obs = gnss_velocity_observation(c.view(shift_s), m);
+  obs.r = cov;
+  const FuseResult r = c.apply(o, obs, c.gate_for(o, obs.rows()));
+  if (r.used) {
+    c.gnss.last_velocity_ns = now;
+    c.gnss.velocity_reject_since_ns = INT64_MIN;
+    return r;
+  }
+  if (r.reason == RejectReason::kChi2Gate &&
+      sustained_rejection(now, c.gnss.velocity_reject_since_ns, c.gnss.last_velocity_ns,
+                          o.gnss_recovery_s)) {
+    c.x.vel_ned_mps = m.vel_ned_mps;
+    c.ekf.reset_states(sx::kVel, cov);
+    c.gnss.last_velocity_ns = now;
+    c.gnss.velocity_reject_since_ns = INT64_MIN;
+    ++c.mode.gnss_recoveries;
+    return FuseResult::ok();
+  }
+  return r;
+}
+
+FuseResult fuse_gnss_heading(FilterCore& c, const FilterOptions& o, const GnssHeading& m,
+                             double shift_s) {
+  if ((m.header.valid & GnssHeading::kValidHeading) == 0) return FuseResult::reject(RejectReason::kInvalid);
+  if (!c.mode.levelled) return FuseResult::reject(RejectReason::kNotAligned);
+  const Eigen::Vector3d baseline = heading_baseline_b(o.gnss_lever_arm_m, o.gnss_secondary_lever_arm_m);
+  if (!c.mode.heading_known) {
+    set_heading(c, m.heading_rad - std::atan2(baseline.y(), baseline.x()), m.heading_std_rad);
+    c.gnss.last_heading_ns = m.header.time_ns;
+    return FuseResult::ok();
+  }
+  const FuseResult r = c.apply(o, gnss_heading_observation(c.view(shift_s), m, baseline), o.chi2_gate[0]);
+  if (r.used) c.gnss.last_heading_ns = m.header.time_ns;
+  return r;
+}
+
+}  // namespace navfuse::filter

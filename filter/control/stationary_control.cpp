@@ -1,0 +1,66 @@
+#include "filter/control/stationary_control.hpp"
+
+#include <cmath>
+
+#include "filter/measurements/zero_velocity.hpp"
+
+namespace navfuse::filter {
+namespace {
+
+// Evidence older than this is not used to decide whether the vehicle moves.
+constexpr double kSpeedEvidenceAge_s = 0.5;
+
+bool speed_evidence_allows_rest(const FilterCore& c, const FilterOptions& o) {
+  const double limit = o.stationary_max_speed_mps;
+  if (seconds_since(c.x.time_ns, c.odometry.last_speed_ns) < kSpeedEvidenceAge_s) {
+    return std::abs(c.odometry.last_speed_mps) < limit;
+  }
+  if (seconds_since(c.x.time_ns, c.gnss.last_speed_ns) < kSpeedEvidenceAge_s &&
+      c.gnss.last_speed_mps >= limit) {
+    return false;
+  }
+  if (c.navigating()) return c.x.vel_ned_mps.norm() < 2.0 * limit;
+  return true;
+}
+
+}  // namespace
+
+void update_stationary(FilterCore& c, const FilterOptions& o, const ImuIncrement& raw) {
+  StationaryState& s = c.stationary;
+  s.window_time_s += raw.dt_s;
+  ++s.window_count;
+  s.sum_rate += raw.dtheta_rad;
+  s.sum_force += raw.dvel_mps;
+  s.sum_force_sq += (raw.dvel_mps / raw.dt_s).squaredNorm();
+  if (s.window_time_s < o.stationary_window_s) return;
+
+  const double t = s.window_time_s;
+  const Eigen::Vector3d mean_raw_rate = s.sum_rate / t;
+  const Eigen::Vector3d mean_force = s.sum_force / t;
+  const double scatter = std::sqrt(std::max(0.0, s.sum_force_sq / s.window_count - mean_force.squaredNorm()));
+  const Eigen::Vector3d mean_rate = mean_raw_rate - c.x.gyro_bias_rps;
+  const bool force_steady = !s.stationary || (mean_force - s.reference_force).norm() < 2.0 * o.stationary_accel_std_mps2;
+  const bool quiet = mean_rate.norm() < o.stationary_gyro_rps && scatter < o.stationary_accel_std_mps2 && force_steady;
+  const bool was_stationary = s.stationary;
+  s.stationary = quiet && s.previous_quiet && speed_evidence_allows_rest(c, o);
+  if (s.stationary && !was_stationary) s.reference_force = mean_force;
+  s.previous_quiet = quiet;
+  s.window_time_s = 0.0;
+  s.window_count = 0;
+  s.sum_rate.setZero();
+  s.sum_force.setZero();
+  s.sum_force_sq = 0.0;
+  if (!s.stationary) return;
+
+  if (c.apply(o, zero_velocity_observation(c.view(0.0), o.zupt_std_mps), o.chi2_gate[2]).used) {
+    ++c.mode.zupts;
+  }
+  if (c.mode.heading_known) {
+    // The window mean of white rate noise has std ARW / sqrt(T); the bias random walk within the
+    // window is negligible next to it.
+    const double std_rps = o.imu.gyro_arw_rad_rts / std::sqrt(t);
+    c.apply(o, zero_rate_observation(c.view(0.0), mean_raw_rate, std_rps), o.chi2_gate[2]);
+  }
+}
+
+}  // namespace navfuse::filter

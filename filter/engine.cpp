@@ -1,0 +1,283 @@
+#include "filter/engine.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/rotation/rotation.hpp"
+#include "filter/input_checks.hpp"
+#include "filter/solution.hpp"
+
+namespace navfuse::filter {
+namespace {
+
+// IMU history capacity: the latency window at up to 1 kHz, plus a checkpoint interval.
+constexpr double kMaxImuRate_hz = 1000.0;
+// Aiding measurements held for re-propagation (a 1 s window of ~10 streams at up to 20 Hz).
+constexpr std::size_t kMaxEntries = 512;
+
+std::int64_t to_ns(double s) { return static_cast<std::int64_t>(std::llround(s * 1e9)); }
+
+bool is_ignored_kind(MeasurementKind k) {
+  return k == MeasurementKind::kDeviceSolution || k == MeasurementKind::kMagnetometer ||
+         k == MeasurementKind::kPressure || k == MeasurementKind::kWheelTicks;
+}
+
+}  // namespace
+
+Engine::Engine(const FilterOptions& options)
+    : options_(options),
+      imu_history_(static_cast<std::size_t>(
+          (std::max(options.max_latency_s, 0.0) + 2.0 * options.checkpoint_interval_s) * kMaxImuRate_hz) + 16),
+      checkpoints_(static_cast<std::size_t>(
+          std::ceil(std::max(options.max_latency_s, 0.0) / std::max(options.checkpoint_interval_s, 1e-3))) + 2) {
+  entries_.reserve(kMaxEntries);
+  imu_input_.set_mounting(rot::dcm_from_rpy(options_.mounting_rpy_rad));
+  core_.restart(options_);
+}
+
+void Engine::process(const Measurement& m) {
+  const MeasurementKind kind = kind_of(m);
+  if (is_ignored_kind(kind)) {
+    ++stats_.of(kind).ignored;
+    return;
+  }
+  if (auto reason = check_input(m)) {
+    ++stats_.of(kind).rejected[static_cast<std::size_t>(*reason)];
+    return;
+  }
+  if (kind == MeasurementKind::kImu) {
+    process_imu(std::get<ImuSample>(m));
+  } else {
+    process_aiding(m);
+  }
+}
+
+void Engine::process_imu(const ImuSample& s) {
+  KindStats& st = stats_.of(MeasurementKind::kImu);
+  const std::int64_t t = s.header.time_ns;
+  if (imu_input_.has_previous()) {
+    if (t <= imu_input_.previous_time_ns()) {
+      ++st.rejected[static_cast<std::size_t>(RejectReason::kTimeBackwards)];
+      return;
+    }
+    if (static_cast<double>(t - imu_input_.previous_time_ns()) * 1e-9 > options_.max_imu_gap_s) {
+      // The state cannot be carried across the gap: start again from this sample.
+      ++st.rejected[static_cast<std::size_t>(RejectReason::kTimeGap)];
+      ++core_.mode.restarts;
+      core_.restart(options_);
+      forget_history();
+      imu_input_.reset();
+    }
+  }
+  imu_time_source_ = s.header.time_source;
+  if (s.saturation != 0) core_.mode.last_imu_fault_ns = t;
+  const std::optional<ImuIncrement> inc = imu_input_.convert(s);
+  ++st.used;
+  if (!inc) return;
+  const ImuRecord record{*inc, t + to_ns(0.5 * inc->dt_s), ++imu_seq_};
+  imu_history_.push_back(record);
+  run_increment(record);
+  ++imu_epoch_;
+  solution_dirty_ = true;
+}
+
+void Engine::run_increment(const ImuRecord& record) {
+  core_.propagate(options_, record.increment);
+  previous_horizon_ns_ = latest_horizon_ns_;
+  latest_horizon_ns_ = record.horizon_ns;
+  fuse_due(record.horizon_ns);
+  maybe_checkpoint(record);
+}
+
+void Engine::fuse_due(std::int64_t horizon_ns) {
+  for (Entry& e : entries_) {
+    if (e.time_ns >= horizon_ns) break;
+    if (!e.applied) fuse_entry(e);
+  }
+}
+
+void Engine::fuse_entry(Entry& e) {
+  const double shift_s = static_cast<double>(e.time_ns - core_.x.time_ns) * 1e-9;
+  const FuseResult r = fuse_measurement(core_, options_, e.m, shift_s);
+  e.applied = true;
+  if (!e.counted) {
+    count(kind_of(e.m), r);
+    e.counted = true;
+  }
+}
+
+void Engine::count(MeasurementKind kind, const FuseResult& r) {
+  KindStats& st = stats_.of(kind);
+  if (r.used) {
+    ++st.used;
+  } else {
+    ++st.rejected[static_cast<std::size_t>(r.reason)];
+  }
+}
+
+void Engine::maybe_checkpoint(const ImuRecord& record) {
+  if (options_.max_latency_s <= 0.0) {
+    // No re-propagation: fused measurements are never needed again.
+    while (!entries_.empty() && entries_.front().applied) entries_.erase(entries_.begin());
+    return;
+  }
+  if (last_checkpoint_ns_ != INT64_MIN &&
+      static_cast<double>(core_.x.time_ns - last_checkpoint_ns_) * 1e-9 <
+          options_.checkpoint_interval_s - 1e-9) {
+    return;
+  }
+  checkpoints_.push_back(Checkpoint{core_, record.horizon_ns, record.seq});
+  last_checkpoint_ns_ = core_.x.time_ns;
+  // Measurements already inside the oldest snapshot can never be re-fused.
+  const std::int64_t oldest = checkpoints_.front().horizon_ns;
+  auto keep = std::find_if(entries_.begin(), entries_.end(),
+                           [&](const Entry& e) { return !(e.applied && e.time_ns < oldest); });
+  entries_.erase(entries_.begin(), keep);
+}
+
+void Engine::process_aiding(const Measurement& m) {
+  const std::int64_t t = header_of(m).time_ns;
+  const MeasurementKind kind = kind_of(m);
+  if (imu_seq_ > 0 && static_cast<double>(core_.x.time_ns - t) * 1e-9 > options_.max_latency_s) {
+    count(kind, FuseResult::reject(RejectReason::kTooLate));
+    return;
+  }
+  if (entries_.size() >= kMaxEntries) {
+    Entry& oldest = entries_.front();
+    if (!oldest.counted) count(kind_of(oldest.m), FuseResult::reject(RejectReason::kOverflow));
+    entries_.erase(entries_.begin());
+  }
+  auto pos = std::upper_bound(entries_.begin(), entries_.end(), t,
+                              [](std::int64_t time, const Entry& e) { return time < e.time_ns; });
+  pos = entries_.insert(pos, Entry{m, t, false, false});
+  if (imu_seq_ == 0 || t >= latest_horizon_ns_) return;  // waits for the IMU to reach it
+  if (t >= previous_horizon_ns_) {
+    fuse_entry(*pos);
+    solution_dirty_ = true;
+    return;
+  }
+  replay_from(t);
+  solution_dirty_ = true;
+}
+
+void Engine::replay_from(std::int64_t t) {
+  // Newest snapshot that does not yet contain the measurement, with its IMU samples still held.
+  std::size_t c = checkpoints_.size();
+  while (c > 0 && checkpoints_[c - 1].horizon_ns > t) --c;
+  const bool found = c > 0 && !imu_history_.empty() &&
+                     imu_history_.front().seq <= checkpoints_[c - 1].seq + 1;
+  if (!found) {
+    auto it = std::find_if(entries_.begin(), entries_.end(),
+                           [&](const Entry& e) { return e.time_ns == t && !e.applied; });
+    if (it != entries_.end()) {
+      count(kind_of(it->m), FuseResult::reject(RejectReason::kTooLate));
+      entries_.erase(it);
+    }
+    return;
+  }
+  const Checkpoint& cp = checkpoints_[c - 1];
+  const std::uint64_t from_seq = cp.seq;
+  const std::int64_t from_horizon = cp.horizon_ns;
+  core_ = cp.core;
+  last_checkpoint_ns_ = core_.x.time_ns;
+  while (checkpoints_.size() > c) checkpoints_.pop_back();
+  for (Entry& e : entries_) {
+    if (e.time_ns >= from_horizon) e.applied = false;
+  }
+  latest_horizon_ns_ = from_horizon;
+  const std::size_t first = static_cast<std::size_t>(from_seq + 1 - imu_history_.front().seq);
+  for (std::size_t i = first; i < imu_history_.size(); ++i) run_increment(imu_history_[i]);
+  ++stats_.replays;
+}
+
+void Engine::forget_history() {
+  entries_.clear();
+  checkpoints_.clear();
+  imu_history_.clear();
+  last_checkpoint_ns_ = INT64_MIN;
+  latest_horizon_ns_ = previous_horizon_ns_ = INT64_MIN;
+}
+
+const NavSolution& Engine::solution() const {
+  if (solution_dirty_) fill_solution();
+  return solution_;
+}
+
+void Engine::fill_solution() const {
+  fill_nav_solution(core_, options_, imu_time_source_, solution_);
+  solution_dirty_ = false;
+}
+
+bool Engine::solution_valid() const {
+  return core_.mode.mode == NavMode::kNavigation || core_.mode.mode == NavMode::kDeadReckoning;
+}
+
+const FilterStats& Engine::stats() const {
+  stats_view_ = stats_;
+  stats_view_.resets = core_.mode.restarts;
+  stats_view_.gnss_recoveries = core_.mode.gnss_recoveries;
+  stats_view_.zupts = core_.mode.zupts;
+  stats_view_.nhc_updates = core_.mode.nhc_updates;
+  return stats_view_;
+}
+
+void Engine::reset(std::uint32_t mask) {
+  if ((mask & kResetFilter) != 0) {
+    ++core_.mode.restarts;
+    core_.restart(options_);
+  } else {
+    core_.flush_covariance(options_);
+    if ((mask & kResetHeading) != 0 && core_.mode.levelled) {
+      core_.mode.heading_known = false;
+      core_.ekf.reset_states(sx::kAttDown, 1, rot::kPi * rot::kPi);
+    }
+    if ((mask & kResetBiases) != 0) {
+      const auto& n = options_.imu;
+      core_.x.gyro_bias_rps.setZero();
+      core_.x.accel_bias_mps2.setZero();
+      core_.ekf.reset_states(sx::kGyroBias, 3, n.initial_gyro_bias_std_rps * n.initial_gyro_bias_std_rps);
+      core_.ekf.reset_states(sx::kAccelBias, 3, n.initial_accel_bias_std_mps2 * n.initial_accel_bias_std_mps2);
+    }
+    if ((mask & kResetPosition) != 0) {
+      core_.mode.position_known = false;
+      core_.ekf.reset_states(sx::kPos, 3, 1e6);
+    }
+  }
+  // Snapshots from before the reset must not be replayed into it.
+  entries_.clear();
+  checkpoints_.clear();
+  last_checkpoint_ns_ = INT64_MIN;
+  solution_dirty_ = true;
+}
+
+void Engine::set_gnss_lever_arm(const Eigen::Vector3d& lever_arm_m, int antenna) {
+  if (antenna == 1) {
+    options_.gnss_secondary_lever_arm_m = lever_arm_m;
+    return;
+  }
+  options_.gnss_lever_arm_m = lever_arm_m;
+  core_.x.gnss_lever_arm_m = lever_arm_m;
+  checkpoints_.clear();
+  entries_.clear();
+  last_checkpoint_ns_ = INT64_MIN;
+}
+
+void Engine::set_mounting(const Eigen::Vector3d& rpy_rad) {
+  options_.mounting_rpy_rad = rpy_rad;
+  imu_input_.set_mounting(rot::dcm_from_rpy(rpy_rad));
+  reset(kResetFilter);
+}
+
+void Engine::set_wheel_lever_arm(const Eigen::Vector3d& lever_arm_m) {
+  options_.wheel_lever_arm_m = lever_arm_m;
+}
+
+std::vector<NavMode> Engine::modes_reached() const {
+  std::vector<NavMode> modes;
+  for (unsigned i = 0; i <= static_cast<unsigned>(NavMode::kDeadReckoning); ++i) {
+    if ((core_.mode.reached_mask & (1u << i)) != 0) modes.push_back(static_cast<NavMode>(i));
+  }
+  return modes;
+}
+
+}  // namespace navfuse::filter

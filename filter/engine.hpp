@@ -1,0 +1,130 @@
+// navfuse::filter::Engine: the loosely-coupled GNSS/INS error-state EKF behind one small API.
+//
+//   FilterOptions opts = options_from_config(config);   // or defaults, then adjust
+//   Engine engine(opts);
+//   for (const Measurement& m : stream) {               // any kind, any order
+//     engine.process(m);
+//     if (is IMU) publish(engine.solution());           // current to the newest IMU sample
+//   }
+//   engine.stats();                                     // used / ignored / rejected by reason
+//
+// Behaviour:
+// - IMU samples (rates or increments, sensor or vehicle frame) drive the strapdown mechanisation;
+//   imu_epoch() increments once per processed sample so callers can emit a pose per sample.
+//   An IMU sample not after the previous one is rejected ("time_backwards"); a gap longer than
+//   FilterOptions::max_imu_gap_s restarts the filter ("time_gap").
+// - Every other measurement is fused at its own timestamp. One that lies between IMU samples is
+//   fused at the nearest sample with its small time offset modelled; one from the future waits
+//   for the IMU to reach it; one from the past (up to max_latency_s, default 1 s) is fused by
+//   restoring the state snapshot before it and re-propagating the stored IMU samples and
+//   measurements (exact, not an approximation). Older ones are rejected ("too_late").
+// - Bad inputs (NaN/inf: "nan"; uncertainty <= 0 on a valid axis: "negative_std"; no valid axis
+//   or impossible values: "invalid") are rejected before they reach the state. Kinds the filter
+//   does not use (device solutions, magnetometer, pressure, wheel ticks) are counted as ignored.
+// - Modes follow MIP's filter states: Init -> Vertical Gyro (levelled while stationary) -> AHRS
+//   (heading from dual antenna, external heading or FilterOptions::initial_heading_rad) -> Full
+//   Navigation (position known; heading from GNSS course above 2 m/s if no other source) ->
+//   Dead Reckoning after gnss_timeout_s without absolute position (kStatusGnssOutage).
+//
+// NavSolution fields: LLH (ellipsoidal height; undulation from EGM96 when installed), NED and
+// vehicle-frame velocity, q_nb and roll/pitch/yaw, 1-sigma position (NED), velocity (NED) and
+// attitude (roll, pitch, yaw) stds, IMU biases and their stds in the IMU *sensor* frame (as MIP
+// 0x82,0x06/07 report them), bias-compensated angular rate and gravity-free acceleration in the
+// vehicle frame, gravity in NED, mode, gnss_fix (the fix type of the GNSS position in use, kNone
+// when none is), status_flags (kStatus* bits) and header.valid (kValid* bits by mode).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/measurements/measurements.hpp"
+#include "filter/filter_core.hpp"
+#include "filter/filter_options.hpp"
+#include "filter/filter_stats.hpp"
+#include "filter/imu_input.hpp"
+#include "filter/ring_buffer.hpp"
+
+namespace navfuse::filter {
+
+class Engine {
+ public:
+  // reset() mask bits.
+  static constexpr std::uint32_t kResetFilter = 1u << 0;    // everything: back to Init
+  static constexpr std::uint32_t kResetHeading = 1u << 1;   // heading unknown: re-align
+  static constexpr std::uint32_t kResetBiases = 1u << 2;    // IMU biases to zero, initial std
+  static constexpr std::uint32_t kResetPosition = 1u << 3;  // position unknown: next fix places
+  static constexpr std::uint32_t kResetAll = 0xFFFFFFFFu;
+
+  explicit Engine(const FilterOptions& options);
+
+  void process(const Measurement& m);
+
+  const NavSolution& solution() const;
+  bool solution_valid() const;
+  std::uint64_t imu_epoch() const { return imu_epoch_; }
+  const FilterStats& stats() const;
+  const FilterOptions& options() const { return options_; }
+
+  void reset(std::uint32_t mask);
+  // antenna 0: primary (position/velocity), 1: secondary (dual-antenna heading baseline).
+  void set_gnss_lever_arm(const Eigen::Vector3d& lever_arm_m, int antenna = 0);
+  // Sensor -> vehicle roll, pitch, yaw (rad, 3-2-1); like MIP, a new mounting restarts the filter.
+  void set_mounting(const Eigen::Vector3d& rpy_rad);
+  void set_wheel_lever_arm(const Eigen::Vector3d& lever_arm_m);
+  std::vector<NavMode> modes_reached() const;
+
+  // Internals for tests and tools: full covariance and nominal state.
+  const FilterCore& core() const { return core_; }
+
+ private:
+  struct ImuRecord {
+    ImuIncrement increment;
+    std::int64_t horizon_ns = 0;  // measurements before this are fused at or before this sample
+    std::uint64_t seq = 0;
+  };
+  struct Checkpoint {
+    FilterCore core;
+    std::int64_t horizon_ns = 0;
+    std::uint64_t seq = 0;
+  };
+  struct Entry {
+    Measurement m;
+    std::int64_t time_ns = 0;
+    bool applied = false;
+    bool counted = false;
+  };
+
+  void process_imu(const ImuSample& s);
+  void process_aiding(const Measurement& m);
+  void run_increment(const ImuRecord& record);
+  void fuse_due(std::int64_t horizon_ns);
+  void fuse_entry(Entry& e);
+  void maybe_checkpoint(const ImuRecord& record);
+  void replay_from(std::int64_t time_ns);
+  void forget_history();
+  void count(MeasurementKind kind, const FuseResult& r);
+  void fill_solution() const;
+
+  FilterOptions options_;
+  FilterCore core_;
+  ImuInput imu_input_;
+  TimeSource imu_time_source_ = TimeSource::kUnknown;
+  std::uint64_t imu_epoch_ = 0;
+  std::uint64_t imu_seq_ = 0;
+  std::int64_t latest_horizon_ns_ = INT64_MIN;
+  std::int64_t previous_horizon_ns_ = INT64_MIN;
+  std::int64_t last_checkpoint_ns_ = INT64_MIN;
+
+  RingBuffer<ImuRecord> imu_history_;
+  RingBuffer<Checkpoint> checkpoints_;
+  std::vector<Entry> entries_;  // aiding measurements by time; capacity reserved once
+
+  FilterStats stats_;
+  mutable FilterStats stats_view_;
+  mutable NavSolution solution_;
+  mutable bool solution_dirty_ = true;
+};
+
+}  // namespace navfuse::filter

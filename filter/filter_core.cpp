@@ -1,0 +1,148 @@
+#include "filter/filter_core.hpp"
+
+#include <cmath>
+#include <variant>
+
+#include "filter/alignment.hpp"
+#include "filter/control/external_aiding_control.hpp"
+#include "filter/control/gnss_control.hpp"
+#include "filter/control/odometry_control.hpp"
+#include "filter/control/stationary_control.hpp"
+#include "filter/mode_machine.hpp"
+
+namespace navfuse::filter {
+namespace {
+
+// Smallest variances kept on the diagonal: far below anything the sensors resolve, large enough
+// that rounding never makes P indefinite.
+StateVector variance_floor_for(const FilterOptions& o) {
+  StateVector f = StateVector::Zero();
+  f.segment<3>(sx::kPos).setConstant(1e-8);
+  f.segment<3>(sx::kVel).setConstant(1e-10);
+  f.segment<3>(sx::kAtt).setConstant(1e-14);
+  f.segment<3>(sx::kGyroBias).setConstant(1e-18);
+  f.segment<3>(sx::kAccelBias).setConstant(1e-14);
+  f(sx::kWheelScale) = 1e-12;
+  f(sx::kMountPitch) = f(sx::kMountYaw) = 1e-14;
+  f.segment<3>(sx::kLeverArm).setConstant(1e-10);
+  f.segment<3>(sx::kGyroScale).setConstant(1e-14);
+  f.segment<3>(sx::kAccelScale).setConstant(1e-14);
+  for (int i = 0; i < sx::kCount; ++i) {
+    if (!o.states.is_active(i)) f(i) = 0.0;
+  }
+  return f;
+}
+
+}  // namespace
+
+void FilterCore::restart(const FilterOptions& o) {
+  const std::int64_t t = x.time_ns;
+  x = NavState{};
+  x.time_ns = t;
+  x.gnss_lever_arm_m = o.gnss_lever_arm_m;
+  ekf = Ekf{};
+  ekf.n = o.states.active_dimension();
+  memory = StrapdownMemory{};
+  step = ProcessAccumulator{};
+  earth = LocalEarth::at(0.0, 0.0);
+  noise_density = process_noise_density(o);
+  variance_floor = variance_floor_for(o);
+  rate_b_rps.setZero();
+  force_b_mps2.setZero();
+  leveller = Leveller{};
+  stationary = StationaryState{};
+  gnss = GnssControlState{};
+  odometry = OdometryState{};
+  const ModeState previous = mode;
+  mode = ModeState{};
+  mode.reached_mask = previous.reached_mask;
+  mode.diverged = previous.diverged;
+  mode.restarts = previous.restarts;
+  mode.gnss_recoveries = previous.gnss_recoveries;
+  mode.zupts = previous.zupts;
+  mode.nhc_updates = previous.nhc_updates;
+  update_mode(*this, o);
+}
+
+void FilterCore::propagate(const FilterOptions& o, const ImuIncrement& raw) {
+  if (!mode.levelled) {
+    x.time_ns = raw.time_ns;
+    feed_leveller(*this, o, raw);
+    update_mode(*this, o);
+    return;
+  }
+  const ImuIncrement comp = compensate(raw, x);
+  rate_b_rps = comp.dtheta_rad / comp.dt_s;
+  force_b_mps2 = comp.dvel_mps / comp.dt_s;
+  if (step.dt_s == 0.0) earth = LocalEarth::at(x.lat_rad, x.height_m);
+  strapdown_step(x, memory, comp, earth);
+  step.add(comp);
+  if (step.dt_s >= o.covariance_interval_s - 1e-9) flush_covariance(o);
+
+  update_stationary(*this, o, raw);
+  apply_nonholonomic(*this, o);
+  update_mode(*this, o);
+  check_divergence(o);
+}
+
+void FilterCore::flush_covariance(const FilterOptions& o) {
+  if (step.dt_s <= 0.0) return;
+  propagate_covariance(ekf.p, ekf.n, x, earth, step, noise_density, o);
+  step = ProcessAccumulator{};
+  ekf.guard(variance_floor);
+}
+
+FuseResult FilterCore::apply(const FilterOptions& o, const Observation& obs, double gate) {
+  if (obs.rows() == 0) return FuseResult::reject(RejectReason::kInvalid);
+  flush_covariance(o);
+  const UpdateResult r = ekf.update(obs, gate);
+  if (r.singular) return FuseResult::reject(RejectReason::kNumerical);
+  if (!r.accepted) return FuseResult::reject(RejectReason::kChi2Gate);
+  inject_error(x, r.dx);
+  ekf.guard(variance_floor);
+  return FuseResult::ok();
+}
+
+bool FilterCore::check_divergence(const FilterOptions& o) {
+  const bool state_finite = std::isfinite(x.lat_rad) && std::isfinite(x.lon_rad) &&
+                            std::isfinite(x.height_m) && x.vel_ned_mps.allFinite() &&
+                            x.q_nb.coeffs().allFinite() && x.gyro_bias_rps.allFinite() &&
+                            x.accel_bias_mps2.allFinite();
+  const double horizontal_var = ekf.p(sx::kPos, sx::kPos) + ekf.p(sx::kPos + 1, sx::kPos + 1);
+  const bool lost = navigating() && horizontal_var > o.divergence_position_std_m * o.divergence_position_std_m;
+  if (state_finite && ekf.finite() && !lost) return false;
+  mode.diverged = true;
+  ++mode.restarts;
+  restart(o);
+  return true;
+}
+
+FuseResult fuse_measurement(FilterCore& core, const FilterOptions& o, const Measurement& m,
+                            double shift_s) {
+  const FuseResult r = std::visit(
+      [&](const auto& v) -> FuseResult {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, GnssPosition>) {
+          return fuse_gnss_position(core, o, v, shift_s);
+        } else if constexpr (std::is_same_v<T, GnssVelocity>) {
+          return fuse_gnss_velocity(core, o, v, shift_s);
+        } else if constexpr (std::is_same_v<T, GnssHeading>) {
+          return fuse_gnss_heading(core, o, v, shift_s);
+        } else if constexpr (std::is_same_v<T, WheelSpeeds> || std::is_same_v<T, VehicleSpeed>) {
+          return fuse_odometry(core, o, v, shift_s);
+        } else if constexpr (std::is_same_v<T, ExternalPosition>) {
+          return fuse_external_position(core, o, v, shift_s);
+        } else if constexpr (std::is_same_v<T, ExternalVelocity>) {
+          return fuse_external_velocity(core, o, v, shift_s);
+        } else if constexpr (std::is_same_v<T, ExternalHeading>) {
+          return fuse_external_heading(core, o, v, shift_s);
+        } else {
+          return FuseResult::reject(RejectReason::kInvalid);
+        }
+      },
+      m);
+  update_mode(core, o);
+  return r;
+}
+
+}  // namespace navfuse::filter

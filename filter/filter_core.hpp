@@ -1,0 +1,136 @@
+// The complete, copyable state of the running filter: nominal state, covariance, the integration
+// memories and every control/alignment/mode variable. The Engine snapshots it for re-propagation
+// of late measurements, so it holds no pointers into the Engine and no heap memory.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include <Eigen/Core>
+
+#include "core/measurements/measurements.hpp"
+#include "filter/ekf.hpp"
+#include "filter/filter_options.hpp"
+#include "filter/filter_stats.hpp"
+#include "filter/measurements/state_view.hpp"
+#include "filter/nav_state.hpp"
+#include "filter/process_model.hpp"
+#include "filter/strapdown.hpp"
+
+namespace navfuse::filter {
+
+// Seconds from `earlier` to `later`; infinity when `earlier` never happened (INT64_MIN).
+inline double seconds_since(std::int64_t later, std::int64_t earlier) {
+  if (earlier == INT64_MIN) return 1e300;
+  return static_cast<double>(later - earlier) * 1e-9;
+}
+
+// The result of offering one measurement to the filter.
+struct FuseResult {
+  bool used = false;
+  RejectReason reason = RejectReason::kInvalid;
+  static FuseResult ok() { return {true, RejectReason::kInvalid}; }
+  static FuseResult reject(RejectReason r) { return {false, r}; }
+};
+
+// Levelling accumulator (alignment.cpp).
+struct Leveller {
+  double static_time_s = 0.0;  // stationary time accumulated
+  Eigen::Vector3d dvel_sum = Eigen::Vector3d::Zero();
+  Eigen::Vector3d dtheta_sum = Eigen::Vector3d::Zero();
+  double window_time_s = 0.0;
+  Eigen::Vector3d window_dvel = Eigen::Vector3d::Zero();
+  Eigen::Vector3d window_dtheta = Eigen::Vector3d::Zero();
+  double window_f_sq = 0.0;
+  int window_count = 0;
+  double since_start_s = 0.0;
+};
+
+// Stationary detector (control/stationary_control.cpp).
+struct StationaryState {
+  double window_time_s = 0.0;
+  int window_count = 0;
+  Eigen::Vector3d sum_rate = Eigen::Vector3d::Zero();
+  Eigen::Vector3d sum_force = Eigen::Vector3d::Zero();
+  double sum_force_sq = 0.0;
+  bool previous_quiet = false;
+  bool stationary = false;
+  Eigen::Vector3d reference_force = Eigen::Vector3d::Zero();  // mean specific force when it began
+};
+
+// GNSS control (control/gnss_control.cpp).
+struct GnssControlState {
+  std::int64_t last_position_ns = INT64_MIN;     // last accepted (or re-anchored) position
+  std::int64_t position_reject_since_ns = INT64_MIN;  // start of the current rejection run
+  std::int64_t last_velocity_ns = INT64_MIN;
+  std::int64_t velocity_reject_since_ns = INT64_MIN;
+  std::int64_t last_heading_ns = INT64_MIN;
+  GnssFixType last_fix = GnssFixType::kNone;
+  // The newest fix seen, kept to place the filter when the heading becomes known.
+  bool have_fix = false;
+  GnssPosition latest_fix;
+  std::int64_t last_speed_ns = INT64_MIN;
+  double last_speed_mps = 0.0;  // GNSS ground speed, for stationary detection
+};
+
+struct OdometryState {
+  std::int64_t last_nhc_ns = INT64_MIN;
+  std::int64_t last_speed_ns = INT64_MIN;
+  double last_speed_mps = 0.0;
+};
+
+struct ModeState {
+  NavMode mode = NavMode::kInitializing;
+  std::uint32_t reached_mask = 0;  // bit per NavMode value
+  bool levelled = false;
+  bool heading_known = false;
+  bool position_known = false;
+  bool diverged = false;  // set by a divergence restart, cleared on reaching Navigation
+  std::int64_t last_absolute_position_ns = INT64_MIN;
+  std::int64_t last_imu_fault_ns = INT64_MIN;
+  // Event counters (kept across restarts; the Engine reports them in FilterStats).
+  std::uint64_t restarts = 0;
+  std::uint64_t gnss_recoveries = 0;
+  std::uint64_t zupts = 0;
+  std::uint64_t nhc_updates = 0;
+};
+
+struct FilterCore {
+  NavState x;
+  Ekf ekf;
+  StrapdownMemory memory;
+  ProcessAccumulator step;
+  LocalEarth earth;
+  StateVector noise_density = StateVector::Zero();
+  StateVector variance_floor = StateVector::Zero();
+  Eigen::Vector3d rate_b_rps = Eigen::Vector3d::Zero();    // compensated, newest sample
+  Eigen::Vector3d force_b_mps2 = Eigen::Vector3d::Zero();  // compensated, newest sample
+
+  Leveller leveller;
+  StationaryState stationary;
+  GnssControlState gnss;
+  OdometryState odometry;
+  ModeState mode;
+
+  // Back to Init with the configured priors (keeps modes reached and stats elsewhere).
+  void restart(const FilterOptions& o);
+  // One IMU interval (raw increments in the vehicle frame).
+  void propagate(const FilterOptions& o, const ImuIncrement& raw);
+  // Brings the covariance up to the state time (before any update).
+  void flush_covariance(const FilterOptions& o);
+  // Gate, update, correct the nominal state. `gate` <= 0: no gate.
+  FuseResult apply(const FilterOptions& o, const Observation& obs, double gate);
+  StateView view(double shift_s) const { return StateView(x, earth, rate_b_rps, shift_s); }
+  double gate_for(const FilterOptions& o, int rows) const {
+    return rows >= 1 && rows <= 3 ? o.chi2_gate[static_cast<std::size_t>(rows - 1)] : 0.0;
+  }
+  // NaN, or a covariance that no longer means anything: restart and flag it.
+  bool check_divergence(const FilterOptions& o);
+  bool navigating() const { return mode.levelled && mode.heading_known && mode.position_known; }
+};
+
+// Fuse one aiding measurement (anything but IMU) at `shift_s` from the state time.
+FuseResult fuse_measurement(FilterCore& core, const FilterOptions& o, const Measurement& m,
+                            double shift_s);
+
+}  // namespace navfuse::filter

@@ -1,0 +1,37 @@
+#include "filter/filter_options.hpp"
+
+#include <cmath>
+
+#include "core/rotation/rotation.hpp"
+
+namespace navfuse::filter {
+namespace {
+
+Eigen::Vector3d vec(const navfuse::config::Vec3& v) { return {v[0], v[1], v[2]}; }
+
+constexpr double kDegPerHourToRadPerSecond = rot::kDegToRad / 3600.0;
+// Random-walk coefficients: X per sqrt(hour) = X / 60 per sqrt(second).
+constexpr double kPerRootHourToPerRootSecond = 1.0 / 60.0;
+
+}  // namespace
+
+FilterOptions options_from_config(const navfuse::config::Config& config) {
+  FilterOptions o;
+  const auto& imu = config.imu;
+  o.imu.gyro_arw_rad_rts = imu.gyro_arw_deg_rthr * rot::kDegToRad * kPerRootHourToPerRootSecond;
+  o.imu.gyro_bias_std_rps = imu.gyro_bias_instability_deg_hr * kDegPerHourToRadPerSecond;
+  o.imu.gyro_bias_corr_time_s = imu.gyro_bias_corr_time_s;
+  o.imu.accel_vrw_mps_rts = imu.accel_vrw_mps_rthr * kPerRootHourToPerRootSecond;
+  o.imu.accel_bias_std_mps2 = imu.accel_bias_instability_mps2;
+  o.imu.accel_bias_corr_time_s = imu.accel_bias_corr_time_s;
+  o.imu.initial_gyro_bias_std_rps = imu.initial_gyro_bias_std_deg_hr * kDegPerHourToRadPerSecond;
+  o.imu.initial_accel_bias_std_mps2 = imu.initial_accel_bias_std_mps2;
+  o.mounting_rpy_rad = vec(imu.mounting_rpy_deg) * rot::kDegToRad;
+  o.gnss_lever_arm_m = vec(config.gnss.lever_arm_m);
+  o.gnss_secondary_lever_arm_m = vec(config.gnss.secondary_lever_arm_m);
+  o.wheel_lever_arm_m = vec(config.wheel.lever_arm_m);
+  o.wheel_speed_std_mps = config.wheel.speed_std_mps;
+  return o;
+}
+
+}  // namespace navfuse::filter

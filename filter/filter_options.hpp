@@ -1,0 +1,84 @@
+// Everything that tunes the filter, in SI units, with documented defaults. `options_from_config`
+// fills the IMU noise, lever arms, mounting and wheel noise from the YAML configuration
+// (DESIGN.md keys); the rest keeps the defaults below unless the caller changes it.
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include <Eigen/Core>
+
+#include "core/config/config.hpp"
+#include "filter/state_layout.hpp"
+
+namespace navfuse::filter {
+
+// Stochastic IMU model (IEEE Std 952 terms), SI. Biases are first-order Gauss-Markov processes
+// with the given stationary std and correlation time, plus the turn-on uncertainty as the initial
+// covariance.
+struct ImuNoise {
+  double gyro_arw_rad_rts = 0.08 * 3.14159265358979323846 / 180.0 / 60.0;  // rad/sqrt(s)
+  double gyro_bias_std_rps = 1.5 * 3.14159265358979323846 / 180.0 / 3600.0;
+  double gyro_bias_corr_time_s = 300.0;
+  double accel_vrw_mps_rts = 0.02 / 60.0;  // m/s/sqrt(s)
+  double accel_bias_std_mps2 = 2.0e-5;
+  double accel_bias_corr_time_s = 300.0;
+  double initial_gyro_bias_std_rps = 20.0 * 3.14159265358979323846 / 180.0 / 3600.0;
+  double initial_accel_bias_std_mps2 = 0.01;
+  double initial_gyro_scale_std = 1000e-6;  // used only with StateSelection::gyro_scale
+  double initial_accel_scale_std = 1000e-6;
+};
+
+struct FilterOptions {
+  ImuNoise imu;
+  StateSelection states;
+
+  // Geometry (vehicle frame FRD, metres; mounting sensor -> vehicle roll, pitch, yaw, 3-2-1, rad).
+  Eigen::Vector3d mounting_rpy_rad = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gnss_lever_arm_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gnss_secondary_lever_arm_m = Eigen::Vector3d::Zero();  // zero: heading = yaw
+  Eigen::Vector3d wheel_lever_arm_m = Eigen::Vector3d::Zero();
+
+  // Odometry and land-vehicle constraints.
+  double wheel_speed_std_mps = 0.05;  // used when a measurement reports 0
+  double initial_wheel_scale_std = 0.02;
+  bool land_vehicle = true;           // apply the non-holonomic constraint
+  double nhc_lateral_std_mps = 0.1;   // body y velocity at the wheel point
+  double nhc_vertical_std_mps = 0.1;  // body z velocity at the wheel point
+  double nhc_interval_s = 0.1;
+  double nhc_min_speed_mps = 1.0;     // below this ZUPT/odometry take over
+  double initial_mount_std_rad = 1.0 * 3.14159265358979323846 / 180.0;
+  double initial_lever_arm_std_m = 0.1;
+
+  // Stationary detection and zero-velocity / zero-angular-rate updates.
+  double stationary_window_s = 0.2;
+  double stationary_gyro_rps = 0.01;        // mean |rate| over a window below this ...
+  double stationary_accel_std_mps2 = 0.05;  // ... and specific-force scatter below this
+  double stationary_max_speed_mps = 0.3;    // and odometry / GNSS / filter speed below this
+  double zupt_std_mps = 0.02;
+
+  // Initialisation and heading alignment (MIP §6.4).
+  double level_time_s = 1.0;             // stationary time averaged for levelling
+  double level_timeout_s = 10.0;         // level from whatever was seen if never stationary
+  std::optional<double> initial_heading_rad;  // configured heading source
+  double kinematic_alignment_speed_mps = 2.0;
+  double kinematic_heading_std_rad = 2.0 * 3.14159265358979323846 / 180.0;
+
+  // GNSS control.
+  double gnss_timeout_s = 2.0;   // no position aiding for longer: dead reckoning
+  double gnss_recovery_s = 3.0;  // sustained rejection for longer: re-anchor to GNSS
+  // Chi-square innovation gate per measurement dimension (1, 2, 3): the 99.99 % quantiles.
+  std::array<double, 3> chi2_gate = {15.14, 18.42, 21.11};
+
+  // Numerics and timing.
+  double covariance_interval_s = 0.05;  // covariance propagated at most this far per step
+  double max_latency_s = 1.0;           // measurements older than this are "too_late"
+  double checkpoint_interval_s = 0.1;   // state snapshots kept for re-propagation
+  double max_imu_gap_s = 1.0;           // larger IMU gaps restart the filter
+  double divergence_position_std_m = 1.0e4;
+};
+
+// Options from a loaded configuration: IMU noise keys, mounting, lever arms, wheel noise.
+FilterOptions options_from_config(const navfuse::config::Config& config);
+
+}  // namespace navfuse::filter

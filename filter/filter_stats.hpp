@@ -1,0 +1,50 @@
+// Per-measurement-kind bookkeeping: how many were fused, ignored (a kind the filter cannot use)
+// or rejected, by reason. The reason strings are what `--summary-json` reports.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string_view>
+
+#include "core/measurements/measurements.hpp"
+
+namespace navfuse::filter {
+
+enum class RejectReason : std::uint8_t {
+  kNan = 0,         // NaN or infinity in a value or an uncertainty
+  kNegativeStd,     // an uncertainty <= 0 on a valid axis
+  kInvalid,         // no valid axis / validity bits say unusable
+  kTimeBackwards,   // an IMU sample not after the previous one
+  kTimeGap,         // an IMU gap beyond max_imu_gap_s: the filter restarted
+  kTooLate,         // older than the state history (max_latency_s)
+  kNotAligned,      // needs a mode the filter has not reached yet
+  kNoFix,           // GNSS without a position fix (none, time only, receiver DR)
+  kChi2Gate,        // innovation outside the chi-square gate
+  kNumerical,       // singular innovation covariance
+  kOverflow,        // pending-measurement buffer full
+  kCount,
+};
+std::string_view to_string(RejectReason reason);
+
+struct KindStats {
+  std::uint64_t used = 0;
+  std::uint64_t ignored = 0;
+  std::array<std::uint64_t, static_cast<std::size_t>(RejectReason::kCount)> rejected{};
+
+  std::uint64_t rejected_total() const;
+  std::uint64_t rejected_for(RejectReason r) const { return rejected[static_cast<std::size_t>(r)]; }
+};
+
+struct FilterStats {
+  std::array<KindStats, static_cast<std::size_t>(MeasurementKind::kCount)> kinds{};
+  std::uint64_t resets = 0;          // restarts to Init (divergence, command, IMU gap)
+  std::uint64_t gnss_recoveries = 0;  // re-anchored to GNSS after sustained rejection
+  std::uint64_t replays = 0;          // late measurements fused by re-propagation
+  std::uint64_t zupts = 0;           // zero-velocity updates applied
+  std::uint64_t nhc_updates = 0;     // non-holonomic constraint updates applied
+
+  const KindStats& of(MeasurementKind k) const { return kinds[static_cast<std::size_t>(k)]; }
+  KindStats& of(MeasurementKind k) { return kinds[static_cast<std::size_t>(k)]; }
+};
+
+}  // namespace navfuse::filter

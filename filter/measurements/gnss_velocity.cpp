@@ -1,0 +1,30 @@
+#include "filter/measurements/gnss_velocity.hpp"
+
+#include "core/rotation/rotation.hpp"
+
+namespace navfuse::filter {
+
+Observation antenna_velocity_observation(const StateView& s, const Eigen::Vector3d& l,
+                                         const Eigen::Vector3d& measured, bool lever_arm_is_state) {
+  Observation obs(3);
+  const Eigen::Vector3d rot_n = s.c_nb * s.rate_b_rps.cross(l);
+  obs.residual = s.x.vel_ned_mps + rot_n - s.earth.earth_rate_ned_rps.cross(s.c_nb * l) - measured;
+  obs.h.block<3, 3>(0, sx::kVel).setIdentity();
+  obs.h.block<3, 3>(0, sx::kAtt) = rot::skew(rot_n);
+  // w_hat = w - d b_g: C (-(d b_g) x l) = C [l x] d b_g.
+  obs.h.block<3, 3>(0, sx::kGyroBias) = s.c_nb * rot::skew(l);
+  if (lever_arm_is_state) obs.h.block<3, 3>(0, sx::kLeverArm) = s.c_nb * rot::skew(s.rate_b_rps);
+  return obs;
+}
+
+Observation gnss_velocity_observation(const StateView& s, const GnssVelocity& m) {
+  Observation obs = antenna_velocity_observation(s, s.x.gnss_lever_arm_m, m.vel_ned_mps, true);
+  if ((m.header.valid & GnssVelocity::kValidCovariance) != 0) {
+    obs.r = m.cov_ned_m2ps2;
+  } else {
+    obs.r = Eigen::Vector3d(0.1, 0.1, 0.2).array().square().matrix().asDiagonal();
+  }
+  return obs;
+}
+
+}  // namespace navfuse::filter

@@ -1,0 +1,28 @@
+#include "filter/nav_state.hpp"
+
+#include <cmath>
+
+#include "core/geodesy/geodesy.hpp"
+#include "core/rotation/rotation.hpp"
+
+namespace navfuse::filter {
+
+void inject_error(NavState& x, const StateVector& dx) {
+  const geo::Radii r = geo::radii_of_curvature(x.lat_rad);
+  x.lat_rad -= dx(sx::kPos + 0) / (r.meridian_m + x.height_m);
+  x.lon_rad -= dx(sx::kPos + 1) / ((r.prime_vertical_m + x.height_m) * std::cos(x.lat_rad));
+  x.height_m += dx(sx::kPos + 2);  // down error: estimate too deep means height too low
+  x.vel_ned_mps -= dx.segment<3>(sx::kVel);
+  // C_true = (I + [phi x]) C_hat: rotate the estimate by +phi in NED.
+  x.q_nb = (rot::quat_from_rotvec(dx.segment<3>(sx::kAtt)) * x.q_nb).normalized();
+  x.gyro_bias_rps -= dx.segment<3>(sx::kGyroBias);
+  x.accel_bias_mps2 -= dx.segment<3>(sx::kAccelBias);
+  x.wheel_scale -= dx(sx::kWheelScale);
+  x.mount_pitch_rad -= dx(sx::kMountPitch);
+  x.mount_yaw_rad -= dx(sx::kMountYaw);
+  x.gnss_lever_arm_m -= dx.segment<3>(sx::kLeverArm);
+  x.gyro_scale -= dx.segment<3>(sx::kGyroScale);
+  x.accel_scale -= dx.segment<3>(sx::kAccelScale);
+}
+
+}  // namespace navfuse::filter

@@ -1,0 +1,37 @@
+// The nominal (total) navigation state the strapdown integrates and the EKF corrects.
+#pragma once
+
+#include <cstdint>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "filter/state_layout.hpp"
+
+namespace navfuse::filter {
+
+struct NavState {
+  std::int64_t time_ns = 0;
+  double lat_rad = 0.0;
+  double lon_rad = 0.0;
+  double height_m = 0.0;
+  Eigen::Vector3d vel_ned_mps = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond q_nb = Eigen::Quaterniond::Identity();  // vehicle (FRD) -> NED
+  // IMU error model, vehicle frame: measured = (1 + scale) * true + bias (+ noise).
+  Eigen::Vector3d gyro_bias_rps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d accel_bias_mps2 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gyro_scale = Eigen::Vector3d::Zero();
+  Eigen::Vector3d accel_scale = Eigen::Vector3d::Zero();
+  // Odometer: measured speed = (1 + wheel_scale) * true speed.
+  double wheel_scale = 0.0;
+  // Residual rotation of the vehicle (odometry) frame relative to the IMU-derived vehicle frame.
+  double mount_pitch_rad = 0.0;
+  double mount_yaw_rad = 0.0;
+  Eigen::Vector3d gnss_lever_arm_m = Eigen::Vector3d::Zero();
+};
+
+// Applies an error-state estimate (estimate minus truth) to the nominal state: x <- x - dx.
+// Position errors are NED metres, converted with the radii of curvature (Groves eq. 2.111).
+void inject_error(NavState& x, const StateVector& dx);
+
+}  // namespace navfuse::filter

@@ -1,0 +1,98 @@
+#include "filter/solution.hpp"
+
+#include <cmath>
+
+#include "core/geodesy/geoid.hpp"
+#include "core/rotation/rotation.hpp"
+
+namespace navfuse::filter {
+namespace {
+
+// Status evidence older than this no longer sets its flag.
+constexpr double kStatusHold_s = 1.0;
+
+// Euler-angle errors from the NED attitude error phi: d(roll, pitch, yaw) = M phi, the inverse of
+// the Euler-rate relation with the body rates rotated to NED (Titterton & Weston ch. 3).
+Eigen::Matrix3d euler_from_phi(const Eigen::Vector3d& rpy) {
+  const double cy = std::cos(rpy.z()), sy = std::sin(rpy.z());
+  const double cp = std::max(std::cos(rpy.y()), 1e-6), tp = std::sin(rpy.y()) / cp;
+  Eigen::Matrix3d m;
+  m << cy / cp, sy / cp, 0.0,
+       -sy, cy, 0.0,
+       cy * tp, sy * tp, 1.0;
+  return m;
+}
+
+}  // namespace
+
+void fill_nav_solution(const FilterCore& c, const FilterOptions& o, TimeSource time_source,
+                       NavSolution& out) {
+  const NavState& x = c.x;
+  const Covariance& p = c.ekf.p;
+  const ModeState& mode = c.mode;
+  out = NavSolution{};
+  out.header.time_ns = x.time_ns;
+  out.header.time_source = time_source;
+  out.mode = mode.mode;
+  const bool navigating = mode.mode == NavMode::kNavigation || mode.mode == NavMode::kDeadReckoning;
+  if (mode.mode == NavMode::kNavigation &&
+      seconds_since(x.time_ns, c.gnss.last_position_ns) <= o.gnss_timeout_s) {
+    out.gnss_fix = c.gnss.last_fix;
+  }
+
+  out.lat_rad = x.lat_rad;
+  out.lon_rad = x.lon_rad;
+  out.height_m = x.height_m;
+  if (auto n = geo::egm96_undulation_m(x.lat_rad, x.lon_rad)) {
+    out.undulation_m = *n;
+    out.header.valid |= NavSolution::kValidUndulation;
+  }
+  const Eigen::Matrix3d c_nb = x.q_nb.toRotationMatrix();
+  out.vel_ned_mps = x.vel_ned_mps;
+  out.vel_body_mps = c_nb.transpose() * x.vel_ned_mps;
+  out.q_nb = x.q_nb;
+  out.rpy_rad = rot::rpy_from_quat(x.q_nb);
+
+  out.pos_std_ned_m = p.block<3, 3>(sx::kPos, sx::kPos).diagonal().cwiseMax(0.0).cwiseSqrt();
+  out.vel_std_ned_mps = p.block<3, 3>(sx::kVel, sx::kVel).diagonal().cwiseMax(0.0).cwiseSqrt();
+  const Eigen::Matrix3d m = euler_from_phi(out.rpy_rad);
+  out.att_std_rpy_rad =
+      (m * p.block<3, 3>(sx::kAtt, sx::kAtt) * m.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
+
+  // Biases are estimated in the vehicle frame and reported in the sensor frame (MIP convention).
+  const Eigen::Matrix3d c_sv = rot::dcm_from_rpy(o.mounting_rpy_rad).transpose();
+  out.gyro_bias_rps = c_sv * x.gyro_bias_rps;
+  out.accel_bias_mps2 = c_sv * x.accel_bias_mps2;
+  out.gyro_bias_std_rps =
+      (c_sv * p.block<3, 3>(sx::kGyroBias, sx::kGyroBias) * c_sv.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
+  out.accel_bias_std_mps2 =
+      (c_sv * p.block<3, 3>(sx::kAccelBias, sx::kAccelBias) * c_sv.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
+
+  out.gravity_ned_mps2 = c.earth.gravity_ned_mps2;
+  out.angular_rate_rps = c.rate_b_rps;
+  out.linear_accel_mps2 = c.force_b_mps2 + c_nb.transpose() * c.earth.gravity_ned_mps2;
+
+  if (mode.levelled) {
+    out.header.valid |= NavSolution::kValidAttitude | NavSolution::kValidAttitudeStd | NavSolution::kValidBiases;
+  }
+  if (mode.levelled && mode.heading_known) out.header.valid |= NavSolution::kValidHeading;
+  if (navigating) {
+    out.header.valid |= NavSolution::kValidPosition | NavSolution::kValidVelocity |
+                        NavSolution::kValidPositionStd | NavSolution::kValidVelocityStd;
+  }
+
+  if (mode.mode == NavMode::kDeadReckoning) out.status_flags |= NavSolution::kStatusGnssOutage;
+  if (c.stationary.stationary) out.status_flags |= NavSolution::kStatusStationary;
+  if (mode.diverged) out.status_flags |= NavSolution::kStatusDiverged;
+  if (seconds_since(x.time_ns, mode.last_imu_fault_ns) < kStatusHold_s) {
+    out.status_flags |= NavSolution::kStatusImuFault;
+  }
+  if (navigating && seconds_since(x.time_ns, c.odometry.last_speed_ns) < kStatusHold_s) {
+    out.status_flags |= NavSolution::kStatusWheelAiding;
+  }
+  if (seconds_since(x.time_ns, c.gnss.last_heading_ns) < o.gnss_timeout_s) {
+    out.status_flags |= NavSolution::kStatusDualAntennaHeading;
+  }
+}
+
+}  // namespace navfuse::filter
