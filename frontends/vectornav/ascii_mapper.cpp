@@ -105,6 +105,8 @@ AsciiOutcome AsciiMapper::handle(const AsciiSentence& s, DecodeSink& sink, Frame
     if (values.empty() || !parse_number(values[0], false, id) || id < 0 || id > 255 || id != std::floor(id))
       return AsciiOutcome::kError;
     if (record) record->fields.emplace_back("register", static_cast<std::uint64_t>(id));
+    // A read request as the host sends it (a port logged in both directions) has only the id.
+    if (s.header == kHeaderRead && values.size() == 1) return AsciiOutcome::kDecoded;
     return handle_register(static_cast<int>(id), values.subspan(1), sink, record);
   }
   if (const RegisterLayout* layout = find_async_output(s.header)) {

@@ -26,16 +26,24 @@ SplitReassembler::Result SplitReassembler::add(const SplitPacketHeader& h, std::
   if (in_flight_ && (h.message_id != message_id_ || h.total != total_ || h.index != next_)) {
     in_flight_ = false;
     abandoned = true;
+    has_orphan_ = true;
+    orphan_id_ = message_id_;
   }
   if (!in_flight_) {
-    // A message may start at index 0 or 1 (errata A25: the nibble base is not stated).
+    // A message may start at index 0 or 1 (errata A25: the nibble base is not stated); a later
+    // index is the continuation of a message whose start was lost.
     if (h.index > 1) {
       packets_ = 0;
+      if (abandoned) return Result::kAbandoned;
+      if (has_orphan_ && h.message_id == orphan_id_) return Result::kIgnored;
+      has_orphan_ = true;
+      orphan_id_ = h.message_id;
       return Result::kAbandoned;
     }
     body_.clear();
     packets_ = 0;
     in_flight_ = true;
+    has_orphan_ = false;
     message_id_ = h.message_id;
     total_ = h.total;
     base_ = h.index;

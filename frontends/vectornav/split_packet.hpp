@@ -33,7 +33,8 @@ ParseStatus parse_split_header(std::span<const std::uint8_t> bytes, SplitPacketH
 // sequence abandons it (the caller counts that as a decode error).
 class SplitReassembler {
  public:
-  enum class Result : std::uint8_t { kPending, kComplete, kAbandoned };
+  // kAbandoned is returned once per lost message; later packets of it give kIgnored.
+  enum class Result : std::uint8_t { kPending, kComplete, kAbandoned, kIgnored };
   SplitReassembler() { body_.reserve(kMaxSplitPackets * kMaxSplitPayloadBytes); }
   // `payload` is the packet's payload. On kComplete, body() holds the reassembled message.
   // kAbandoned means a partial message was dropped (this packet may have started a new one).
@@ -48,6 +49,8 @@ class SplitReassembler {
   std::vector<std::uint8_t> body_;
   std::size_t packets_ = 0;
   bool in_flight_ = false;
+  bool has_orphan_ = false;  // a message already counted as lost, whose packets are ignored
+  std::uint8_t orphan_id_ = 0;
   std::uint8_t message_id_ = 0, total_ = 0, base_ = 0, next_ = 0;
 };
 

@@ -72,7 +72,8 @@ void VnStreamDecoder::on_split(const Frame& frame, DecodeSink& sink) {
   const SplitReassembler::Result result = split_.add(h, payload);
   if (split_.packets() == 1) split_offset_ = frame.offset;  // this packet started a message
   switch (result) {
-    case SplitReassembler::Result::kPending: break;
+    case SplitReassembler::Result::kPending:
+    case SplitReassembler::Result::kIgnored: break;
     case SplitReassembler::Result::kAbandoned: count(DecodeIssue::kSplitSequence); break;
     case SplitReassembler::Result::kComplete: on_binary(split_.body(), split_offset_, kSplitName, sink); break;
   }
