@@ -48,6 +48,32 @@ TEST(VnSpecVectors, Crc16CheckValueAndFigureCrcs) {
   EXPECT_EQ(bytes::crc16_xmodem(std::span(a3).subspan(1, a3.size() - 3)), 0x6A4E);
 }
 
+// The ICD's reference algorithm (L624-639), byte-swap form, as an independent check of the
+// table-driven core implementation over random data, lengths and initial values.
+std::uint16_t icd_crc16(std::span<const std::uint8_t> data, std::uint16_t crc) {
+  for (std::uint8_t b : data) {
+    crc = static_cast<std::uint16_t>((crc >> 8) | (crc << 8));
+    crc ^= b;
+    crc ^= static_cast<std::uint16_t>((crc & 0xFF) >> 4);
+    crc ^= static_cast<std::uint16_t>(crc << 12);
+    crc ^= static_cast<std::uint16_t>((crc & 0x00FF) << 5);
+  }
+  return crc;
+}
+
+TEST(VnSpecVectors, Crc16MatchesTheIcdReferenceCode) {
+  std::uint64_t x = 88172645463325252ull;
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::vector<std::uint8_t> data(static_cast<std::size_t>(trial % 67));
+    for (auto& b : data) {
+      x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+      b = static_cast<std::uint8_t>(x);
+    }
+    const auto init = static_cast<std::uint16_t>(x >> 20);
+    ASSERT_EQ(bytes::crc16_xmodem(data, init), icd_crc16(data, init)) << trial;
+  }
+}
+
 TEST(VnSpecVectors, FigA2CommonYpr) {
   const auto packet = from_hex(kFigA2);
   const BinaryMessage m = decode_packet(packet);

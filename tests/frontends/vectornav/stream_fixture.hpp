@@ -25,7 +25,8 @@ inline constexpr std::int64_t kImuPeriodNs = 5'000'000;  // 200 Hz
 inline constexpr int kGnssEvery = 40;                     // 5 Hz
 inline constexpr int kSpeedEvery = 20;                    // 10 Hz
 
-inline StreamContent make_vn_stream(int epochs) {
+// `with_ascii`: also write the compass heading and vehicle speed sentences.
+inline StreamContent make_vn_stream(int epochs, bool with_ascii = true) {
   StreamContent c;
   VnMeasurementEncoder enc;
   auto put = [&](const Measurement& m) {
@@ -83,12 +84,14 @@ inline StreamContent make_vn_stream(int epochs) {
         v.cov_ned_m2ps2 = Eigen::Matrix3d::Identity() * 0.03;
         put(v);
       }
-      GnssHeading h;
-      h.header = {t, TimeSource::kGps, 0, GnssHeading::kValidHeading};
-      h.heading_rad = sol.rpy_rad.z();
-      put(h);
+      if (with_ascii) {
+        GnssHeading h;
+        h.header = {t, TimeSource::kGps, 0, GnssHeading::kValidHeading};
+        h.heading_rad = sol.rpy_rad.z();
+        put(h);
+      }
     }
-    if (i % kSpeedEvery == 0) {
+    if (with_ascii && i % kSpeedEvery == 0) {
       VehicleSpeed v;
       v.header = {t, TimeSource::kGps, 0, VehicleSpeed::kValidSpeed};
       v.speed_mps = 10.0;
