@@ -1,0 +1,54 @@
+#include "frontends/unicore/frontend.hpp"
+
+#include "frontends/nmea/fields.hpp"
+#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/sentences.hpp"
+#include "frontends/unicore/decoder.hpp"
+#include "frontends/unicore/encoder.hpp"
+
+namespace navfuse::frontends {
+namespace {
+
+// Names that identify this device's stream. Plain NMEA names count too (the UM220 outputs them
+// by default, L1479-L1486), but only with a checksum, so that other devices' '$' sentences
+// (VectorNav "$VN...") or stray text do not look like a UM220.
+constexpr std::string_view kUnicoreNames[] = {"GYOACC", "GYOACC-V", "SNRSTAT", "NAVPOS", "NAVVEL",
+                                              "NAVTIME", "NAVACC", "NAVATT", "NOTICE", "CWOUT", "LSF"};
+constexpr std::string_view kNmeaTypes[] = {"GGA", "GLL", "GSA", "GSV", "RMC", "VTG", "ZDA", "GST"};
+
+bool known_name(std::string_view name) {
+  for (std::string_view n : kUnicoreNames) {
+    if (nmea::iequals(name, n)) return true;
+  }
+  if (const auto nm = nmea::split_sentence_name(name)) {
+    for (std::string_view t : kNmeaTypes) {
+      if (nm->type_view() == t) return true;
+    }
+  }
+  return false;
+}
+
+std::size_t probe(std::span<const std::uint8_t> head) {
+  nmea::SentenceFramer framer;
+  std::size_t count = 0;
+  framer.feed(head, [&](const nmea::Frame& f) {
+    if (!f.has_checksum || f.start != '$') return;
+    const std::string_view name = f.body.substr(0, f.body.find(','));
+    if (known_name(name)) ++count;
+  });
+  return count;
+}
+
+std::unique_ptr<StreamDecoder> make_decoder() { return std::make_unique<unicore::UnicoreDecoder>(); }
+std::unique_ptr<MeasurementEncoder> make_encoder() { return std::make_unique<unicore::UnicoreEncoder>(); }
+
+}  // namespace
+
+const FrontendInfo& unicore_frontend() {
+  static const FrontendInfo info{"unicore",
+                                 "Unicore UM220-INS ASCII protocol + NMEA (GYOACC, NAVPOS/VEL/ATT, GGA...)",
+                                 &probe, &make_decoder, &make_encoder};
+  return info;
+}
+
+}  // namespace navfuse::frontends
