@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "apps/aid/aid_command.hpp"
 #include "apps/common/command_error.hpp"
 #include "apps/decode/decode_command.hpp"
 
@@ -13,6 +14,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "navfuse 0.1.0");
   int exit_code = 0;
   navfuse::apps::add_decode_command(app, exit_code);
+  navfuse::apps::add_aid_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
