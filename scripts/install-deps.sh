@@ -11,6 +11,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   proj-data                           # /usr/share/proj/egm96_15.gtx, the EGM96 geoid grid
   python3 python3-venv python3-pip    # FusionEngine client compatibility test
+  python3-matplotlib chromium         # navfuse bench: report plots; headless check that report.html renders
 )
 if [ -n "${NAVFUSE_EXTRA_PACKAGES:-}" ]; then
   read -r -a extra <<< "${NAVFUSE_EXTRA_PACKAGES}"
