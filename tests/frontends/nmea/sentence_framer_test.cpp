@@ -64,7 +64,9 @@ TEST(SentenceFramer, MissingChecksumIsAcceptedUnlessRequired) {
   ASSERT_EQ(got.size(), 1u);
   EXPECT_FALSE(got[0].has_checksum);
   EXPECT_EQ(got[0].body, "FAIL,0");
-  SentenceFramer strict(FramerOptions{.require_checksum = true});
+  FramerOptions strict_options;
+  strict_options.require_checksum = true;
+  SentenceFramer strict(strict_options);
   EXPECT_TRUE(feed_all(strict, "$FAIL,0\r\n").empty());
   EXPECT_EQ(strict.counters().bad_frames, 1u);
 }
