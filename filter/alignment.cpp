@@ -22,7 +22,8 @@ void initial_covariance(FilterCore& c, const FilterOptions& o, double tilt_std_r
       n.initial_gyro_bias_std_rps * n.initial_gyro_bias_std_rps);
   const double ba_var = n.initial_accel_bias_std_mps2 * n.initial_accel_bias_std_mps2;
   e.p.block<3, 3>(sx::kAccelBias, sx::kAccelBias).diagonal().setConstant(ba_var);
-  const double heading_std = o.initial_heading_rad ? 5.0 * rot::kDegToRad : rot::kPi;
+  // An unknown heading is not estimated (vertical-gyro mode): zero variance until it is set.
+  const double heading_std = o.initial_heading_rad ? 5.0 * rot::kDegToRad : 0.0;
   e.p(sx::kAttDown, sx::kAttDown) = heading_std * heading_std;
   if (stationary) {
     // Levelling makes C_nb f = (0, 0, -g): the horizontal velocity error rate
@@ -120,6 +121,12 @@ void set_heading(FilterCore& c, double yaw_rad, double std_rad) {
   const Eigen::Vector3d rpy = rot::rpy_from_quat(c.x.q_nb);
   c.x.q_nb = rot::quat_from_rpy(Eigen::Vector3d(rpy.x(), rpy.y(), yaw_rad));
   c.ekf.reset_states(sx::kAttDown, 1, std_rad * std_rad);
+  if (!c.mode.heading_known) {
+    // With the wrong heading the horizontal earth rate was removed in the wrong direction, and
+    // the gyro-bias estimate absorbed the difference (up to 2 w_ie cos(lat)): widen it by that.
+    const double w = 2.0 * c.earth.earth_rate_ned_rps.head<2>().norm();
+    c.ekf.p.block<3, 3>(sx::kGyroBias, sx::kGyroBias).diagonal().array() += w * w;
+  }
   c.mode.heading_known = true;
 }
 

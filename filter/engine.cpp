@@ -229,7 +229,7 @@ void Engine::reset(std::uint32_t mask) {
     core_.flush_covariance(options_);
     if ((mask & kResetHeading) != 0 && core_.mode.levelled) {
       core_.mode.heading_known = false;
-      core_.ekf.reset_states(sx::kAttDown, 1, rot::kPi * rot::kPi);
+      core_.ekf.reset_states(sx::kAttDown, 1, 0.0);  // relative heading, not estimated
     }
     if ((mask & kResetBiases) != 0) {
       const auto& n = options_.imu;

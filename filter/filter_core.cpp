@@ -89,6 +89,10 @@ void FilterCore::flush_covariance(const FilterOptions& o) {
   if (step.dt_s <= 0.0) return;
   propagate_covariance(ekf.p, ekf.n, x, earth, step, noise_density, o);
   step = ProcessAccumulator{};
+  // Vertical-gyro mode (MIP §6.2): the heading is relative, not estimated. Estimating it through
+  // the earth-rate coupling from a heading error of tens of degrees would be far outside the
+  // linearisation and drags roll and pitch with it.
+  if (mode.levelled && !mode.heading_known) ekf.reset_states(sx::kAttDown, 1, 0.0);
   ekf.guard(variance_floor);
 }
 

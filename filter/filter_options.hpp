@@ -43,6 +43,9 @@ struct FilterOptions {
   double wheel_speed_std_mps = 0.05;  // used when a measurement reports 0
   double initial_wheel_scale_std = 0.02;
   bool land_vehicle = true;           // apply the non-holonomic constraint
+  // The point that does not slip sideways or leave the road (the rear-axle centre of a car);
+  // nullopt: the wheel lever arm, which is where odometers usually measure.
+  std::optional<Eigen::Vector3d> nhc_lever_arm_m;
   double nhc_lateral_std_mps = 0.1;   // body y velocity at the wheel point
   double nhc_vertical_std_mps = 0.1;  // body z velocity at the wheel point
   double nhc_interval_s = 0.1;

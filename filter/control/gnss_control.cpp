@@ -83,6 +83,11 @@ FuseResult fuse_gnss_velocity(FilterCore& c, const FilterOptions& o, const GnssV
                                   ? m.cov_ned_m2ps2
                                   : Eigen::Matrix3d(Eigen::Vector3d(0.01, 0.01, 0.04).asDiagonal());
   if (!c.mode.heading_known) {
+    // At rest the zero-velocity updates know the velocity better than GNSS, and a reset would
+    // cut the velocity-tilt correlation that keeps the levelling honest.
+    if (c.stationary.stationary && speed < o.stationary_max_speed_mps) {
+      return FuseResult::reject(RejectReason::kNotAligned);
+    }
     c.x.vel_ned_mps = m.vel_ned_mps;
     c.ekf.reset_states(sx::kVel, cov);
     c.gnss.last_velocity_ns = now;

@@ -31,7 +31,7 @@ void apply_nonholonomic(FilterCore& c, const FilterOptions& o) {
   if (seconds_since(c.x.time_ns, c.odometry.last_nhc_ns) < o.nhc_interval_s - 1e-9) return;
   if (c.x.vel_ned_mps.norm() < o.nhc_min_speed_mps) return;
   c.odometry.last_nhc_ns = c.x.time_ns;
-  const Observation obs = nonholonomic_observation(c.view(0.0), o.wheel_lever_arm_m,
+  const Observation obs = nonholonomic_observation(c.view(0.0), o.nhc_lever_arm_m.value_or(o.wheel_lever_arm_m),
                                                    o.nhc_lateral_std_mps, o.nhc_vertical_std_mps);
   if (c.apply(o, obs, o.chi2_gate[1]).used) ++c.mode.nhc_updates;
 }
