@@ -55,7 +55,7 @@ constexpr std::size_t kLlhLonOffset = 8, kLlhHeightOffset = 16, kLlhValidOffset 
 constexpr std::size_t kQuatValidOffset = 16;
 constexpr std::size_t kDcmValidOffset = 36;
 constexpr std::size_t kDaHeadingOffset = 4, kDaStdOffset = 8, kDaFixOffset = 12, kDaValidOffset = 15;
-constexpr std::size_t kGLlhMslOffset = 24, kGLlhHAccOffset = 32, kGLlhVAccOffset = 36, kGLlhValidOffset = 40;
+constexpr std::size_t kGLlhHAccOffset = 32, kGLlhVAccOffset = 36, kGLlhValidOffset = 40;
 constexpr std::size_t kGVelSpeedAccOffset = 24, kGVelValidOffset = 32;
 constexpr std::size_t kFixNumSvOffset = 1, kFixFlagsOffset = 2, kFixValidOffset = 4;
 
