@@ -1,11 +1,19 @@
 #include "apps/common/frontend_registry.hpp"
 
+#include "frontends/fusionengine/frontend.hpp"
+#include "frontends/mip/frontend.hpp"
+#include "frontends/unicore/frontend.hpp"
+#include "frontends/vectornav/frontend.hpp"
+
 namespace navfuse::apps {
 
 const std::vector<const frontends::FrontendInfo*>& frontends_list() {
   static const std::vector<const frontends::FrontendInfo*> list = [] {
-    std::vector<const frontends::FrontendInfo*> l;
-    return l;
+    // Binary protocols first: on a tie in valid frames the one with the stronger check wins
+    // (CRC-32, then Fletcher, then CRC-16 / XOR-checked ASCII).
+    return std::vector<const frontends::FrontendInfo*>{
+        &frontends::fusionengine_frontend(), &frontends::mip_frontend(),
+        &frontends::vectornav_frontend(), &frontends::unicore_frontend()};
   }();
   return list;
 }
