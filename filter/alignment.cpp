@@ -120,6 +120,12 @@ void level(FilterCore& c, const FilterOptions& o, const Eigen::Vector3d& f, doub
 void set_heading(FilterCore& c, double yaw_rad, double std_rad) {
   const Eigen::Vector3d rpy = rot::rpy_from_quat(c.x.q_nb);
   c.x.q_nb = rot::quat_from_rpy(Eigen::Vector3d(rpy.x(), rpy.y(), yaw_rad));
+  // Roll and pitch errors belong to the vehicle, so their NED components turn with the heading:
+  // phi_h' = Rz(d_psi) phi_h. Transform the attitude rows and columns of P accordingly.
+  const Eigen::Matrix3d r = rot::dcm_from_rpy(Eigen::Vector3d(0.0, 0.0, rot::wrap_pi(yaw_rad - rpy.z())));
+  const int n = c.ekf.n;
+  c.ekf.p.block(sx::kAtt, 0, 3, n) = (r * c.ekf.p.block(sx::kAtt, 0, 3, n)).eval();
+  c.ekf.p.block(0, sx::kAtt, n, 3) = (c.ekf.p.block(0, sx::kAtt, n, 3) * r.transpose()).eval();
   c.ekf.reset_states(sx::kAttDown, 1, std_rad * std_rad);
   if (!c.mode.heading_known) {
     // With the wrong heading the horizontal earth rate was removed in the wrong direction, and

@@ -85,9 +85,9 @@ void FilterCore::propagate(const FilterOptions& o, const ImuIncrement& raw) {
   check_divergence(o);
 }
 
-void FilterCore::flush_covariance(const FilterOptions& o) {
+void FilterCore::flush_covariance(const FilterOptions& /*o*/) {
   if (step.dt_s <= 0.0) return;
-  propagate_covariance(ekf.p, ekf.n, x, earth, step, noise_density, o);
+  propagate_covariance(ekf.p, ekf.n, x, earth, step, noise_density);
   step = ProcessAccumulator{};
   // Vertical-gyro mode (MIP §6.2): the heading is relative, not estimated. Estimating it through
   // the earth-rate coupling from a heading error of tens of degrees would be far outside the

@@ -33,8 +33,7 @@ StateVector process_noise_density(const FilterOptions& o) {
 }
 
 void propagate_covariance(Covariance& p, int n, const NavState& x, const LocalEarth& earth,
-                          const ProcessAccumulator& step, const StateVector& q,
-                          const FilterOptions& o) {
+                          const ProcessAccumulator& step, const StateVector& q) {
   const double t = step.dt_s;
   if (t <= 0.0) return;
   const Eigen::Matrix3d c_nb = x.q_nb.toRotationMatrix();
@@ -69,9 +68,10 @@ void propagate_covariance(Covariance& p, int n, const NavState& x, const LocalEa
   f(sx::kAtt + 2, sx::kVel + 1) = -tan_lat / re_h;
   f.block<3, 3>(sx::kAtt, sx::kGyroBias) = c_nb;
   f.block<3, 3>(sx::kAtt, sx::kGyroScale) = c_nb * w_b.asDiagonal();
-  // Gauss-Markov biases.
-  f.block<3, 3>(sx::kGyroBias, sx::kGyroBias).diagonal().setConstant(-1.0 / o.imu.gyro_bias_corr_time_s);
-  f.block<3, 3>(sx::kAccelBias, sx::kAccelBias).diagonal().setConstant(-1.0 / o.imu.accel_bias_corr_time_s);
+  // Biases: F = 0. The bias is a turn-on constant plus a slow Gauss-Markov part; a -1/tau decay
+  // on the sum would pull the (large) turn-on estimate toward zero and decorrelate it from the
+  // tilt it was levelled with. Over the filter's horizons (tau >= minutes) the GM part is a random
+  // walk with the GM driving noise, which process_noise_density supplies.
 
   auto fn = f.topLeftCorner(n, n);
   Covariance ft;

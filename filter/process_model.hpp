@@ -37,6 +37,6 @@ StateVector process_noise_density(const FilterOptions& options);
 // P <- Phi P Phi^T + Q_d over the accumulated step (a no-op for an empty step).
 void propagate_covariance(Covariance& p, int active_dimension, const NavState& x,
                           const LocalEarth& earth, const ProcessAccumulator& step,
-                          const StateVector& noise_density, const FilterOptions& options);
+                          const StateVector& noise_density);
 
 }  // namespace navfuse::filter

@@ -185,7 +185,7 @@ TEST(FilterScenario, OutliersRejectedAndJumpRecovered) {
   EXPECT_LE(recovered_at, o.gnss_recovery_s + 1.0);
 }
 
-TEST(FilterScenario, DISABLED_MonteCarloNeesConsistency) {
+TEST(FilterScenario, MonteCarloNeesConsistency) {
   // 25 runs of the short drive (standalone GNSS, wheel speed, a 30 s outage), different seeds.
   // Average NEES (3 dof) over runs and 1 Hz epochs after alignment + 30 s must lie in the
   // two-sided 95 % bounds of chi2(3 N) / N for N = 25: [52.94, 100.84] / 25.
