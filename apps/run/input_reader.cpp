@@ -1,0 +1,213 @@
+#include "apps/run/input_reader.hpp"
+
+#include <sys/stat.h>
+
+#include <array>
+#include <chrono>
+
+#include "apps/common/command_error.hpp"
+#include "apps/common/frontend_registry.hpp"
+#include "apps/run/device_setup.hpp"
+#include "apps/run/run_log.hpp"
+
+namespace navfuse::apps {
+namespace {
+
+constexpr int kReadTimeoutMs = 100;        // how often a quiet reader looks at the stop flag
+constexpr std::size_t kReadChunk = 16384;  // one read; a VN-300 at 921600 baud fills ~92 kB/s
+// Detection waits for this many bytes so that every probe sees a few whole frames.
+constexpr std::size_t kDetectMinBytes = 2048;
+// --configure-device: how long to wait for a device's answer to one command, and the quiet
+// gap that ends an answer.
+constexpr auto kReplyTimeout = std::chrono::milliseconds(250);
+constexpr int kReplyQuietMs = 30;
+
+bool is_regular_file(const io::Uri& uri) {
+  struct stat st {};
+  return uri.scheme == io::Scheme::kFile && uri.path != "-" && ::stat(uri.path.c_str(), &st) == 0 &&
+         S_ISREG(st.st_mode);
+}
+
+}  // namespace
+
+// Stamps decoded measurements with their input and arrival time and queues them. One scratch
+// item is reused, so queueing copies into preallocated storage and nothing is allocated.
+class InputReader::QueueSink final : public frontends::DecodeSink {
+ public:
+  explicit QueueSink(InputReader& reader) : reader_(reader) { item_.source = reader.index_; }
+  void set_arrival(std::int64_t arrival_ns) { item_.arrival_ns = arrival_ns; }
+
+  void on_measurement(const Measurement& m) override {
+    item_.measurement = m;
+    header_of(item_.measurement).stream_id = reader_.index_;
+    bool queued = false;
+    if (reader_.live_) {
+      queued = reader_.queue_.try_push(item_);
+    } else {
+      while (!queued && !reader_.stop_.load(std::memory_order_relaxed)) {
+        queued = reader_.queue_.push_wait(item_, std::chrono::milliseconds(kReadTimeoutMs));
+      }
+    }
+    (queued ? reader_.measurements_ : reader_.dropped_).fetch_add(1, std::memory_order_relaxed);
+  }
+
+ private:
+  InputReader& reader_;
+  ArrivedMeasurement item_;
+};
+
+InputReader::InputReader(InputEndpoint endpoint, std::uint16_t index, MeasurementQueue& queue,
+                         bool configure_device)
+    : endpoint_(std::move(endpoint)),
+      index_(index),
+      queue_(queue),
+      configure_(configure_device),
+      live_(!is_regular_file(endpoint_.uri)),
+      sink_(std::make_unique<QueueSink>(*this)) {
+  try {
+    transport_ = io::open_transport(endpoint_.uri, io::Direction::kInput);
+  } catch (const io::TransportError& e) {
+    throw CommandError("--in '" + endpoint_.text + "': " + e.what());
+  }
+  if (endpoint_.frontend != nullptr) use_frontend(endpoint_.frontend);
+  seen_reconnects_ = transport_->stats().reconnects;
+  seen_errors_ = transport_->stats().errors;
+}
+
+InputReader::~InputReader() {
+  request_stop();
+  join();
+}
+
+void InputReader::start() { thread_ = std::thread([this] { run(); }); }
+
+void InputReader::join() {
+  if (thread_.joinable()) thread_.join();
+}
+
+std::string_view InputReader::format() const {
+  const auto* f = frontend_.load(std::memory_order_acquire);
+  return f != nullptr ? f->format : std::string_view{};
+}
+
+InputCounters InputReader::counters() const {
+  constexpr auto r = std::memory_order_relaxed;
+  return {bytes_.load(r),        frames_.load(r),  bad_frames_.load(r), measurements_.load(r),
+          dropped_.load(r),      reconnects_.load(r), ended()};
+}
+
+void InputReader::use_frontend(const frontends::FrontendInfo* frontend) {
+  decoder_ = frontend->make_decoder();
+  frontend_.store(frontend, std::memory_order_release);
+}
+
+void InputReader::run() {
+  std::array<std::uint8_t, kReadChunk> buffer{};
+  if (configure_ && live_) configure_device();
+  while (!stop_.load(std::memory_order_relaxed)) {
+    const std::ptrdiff_t n = transport_->read(buffer, kReadTimeoutMs);
+    if (n == io::kEndOfStream) break;
+    if (n > 0) {
+      sink_->set_arrival(monotonic_ns());
+      feed(std::span<const std::uint8_t>(buffer.data(), static_cast<std::size_t>(n)));
+    }
+    watch_link();
+  }
+  if (decoder_) {
+    decoder_->finish(*sink_);
+  } else if (!head_.empty()) {
+    detect({}, /*at_end=*/true);
+  }
+  publish_counters();
+  ended_.store(true, std::memory_order_release);
+}
+
+void InputReader::feed(std::span<const std::uint8_t> bytes) {
+  bytes_.fetch_add(bytes.size(), std::memory_order_relaxed);
+  if (decoder_) {
+    decoder_->feed(bytes, *sink_);
+  } else {
+    detect(bytes, /*at_end=*/false);
+  }
+  publish_counters();
+}
+
+void InputReader::detect(std::span<const std::uint8_t> bytes, bool at_end) {
+  head_.insert(head_.end(), bytes.begin(), bytes.end());
+  if (head_.size() < kDetectMinBytes && !at_end) return;
+  if (const auto* f = detect_format(head_)) {
+    log_event("input '" + endpoint_.text + "': detected format " + std::string(f->format));
+    use_frontend(f);
+    decoder_->feed(head_, *sink_);
+    head_ = {};  // release the probe buffer: it is not needed again
+    return;
+  }
+  if (!detection_failed_logged_ && (at_end || head_.size() >= kProbeBytes)) {
+    log_event("input '" + endpoint_.text + "': no frame of " + known_formats() + " in the first " +
+              std::to_string(head_.size()) + " bytes; give the format as FORMAT:URI");
+    detection_failed_logged_ = true;
+  }
+  // Keep looking in a sliding window: a live device may start with noise or a boot banner.
+  if (head_.size() >= kProbeBytes) head_.erase(head_.begin(), head_.begin() + kProbeBytes / 2);
+}
+
+void InputReader::watch_link() {
+  const io::TransportStats& s = transport_->stats();
+  if (s.errors != seen_errors_) {
+    seen_errors_ = s.errors;
+    if (transport_->is_open()) return;  // a transient error, the link is still up
+    log_event("input '" + endpoint_.text + "' lost: " + s.last_error + "; re-opening");
+  }
+  if (s.reconnects != seen_reconnects_) {
+    seen_reconnects_ = s.reconnects;
+    reconnects_.store(s.reconnects, std::memory_order_relaxed);
+    log_event("input '" + endpoint_.text + "' re-opened");
+    if (configure_) configure_device();
+  }
+}
+
+void InputReader::configure_device() {
+  const std::string_view fmt = format();
+  const std::vector<DeviceCommand> commands = device_setup_commands(fmt);
+  if (commands.empty()) return;
+  transport_->wait_open(static_cast<int>(kReplyTimeout.count()));
+  std::array<std::uint8_t, kReadChunk> buffer{};
+  std::vector<std::uint8_t> reply;
+  std::size_t refused = 0;
+  for (const DeviceCommand& command : commands) {
+    if (transport_->write(command) <= 0) {
+      log_event("input '" + endpoint_.text + "': cannot send the device set-up (link down)");
+      return;
+    }
+    // Read the answer (and whatever the device streams meanwhile, which is decoded as usual).
+    reply.clear();
+    const auto deadline = std::chrono::steady_clock::now() + kReplyTimeout;
+    while (std::chrono::steady_clock::now() < deadline && !stop_.load(std::memory_order_relaxed)) {
+      const int wait = reply.empty() ? kReadTimeoutMs : kReplyQuietMs;
+      const std::ptrdiff_t n = transport_->read(buffer, wait);
+      if (n <= 0) {
+        if (!reply.empty()) break;
+        continue;
+      }
+      const std::span<const std::uint8_t> got(buffer.data(), static_cast<std::size_t>(n));
+      reply.insert(reply.end(), got.begin(), got.end());
+      sink_->set_arrival(monotonic_ns());
+      feed(got);
+    }
+    if (const std::string why = find_refusal(fmt, reply); !why.empty()) {
+      ++refused;
+      log_event("input '" + endpoint_.text + "': device refused a set-up command: " + why);
+    }
+  }
+  log_event("input '" + endpoint_.text + "': sent the " + std::string(fmt) + " device set-up (" +
+            std::to_string(commands.size()) + " commands, " + std::to_string(refused) + " refused)");
+}
+
+void InputReader::publish_counters() {
+  if (!decoder_) return;
+  const frontends::StreamCounters& c = decoder_->counters();
+  frames_.store(c.frames, std::memory_order_relaxed);
+  bad_frames_.store(c.bad_frames, std::memory_order_relaxed);
+}
+
+}  // namespace navfuse::apps

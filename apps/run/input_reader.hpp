@@ -1,0 +1,91 @@
+// One --in stream of the nav process: a thread that reads bytes from the transport, decodes them
+// with the stream's front-end and queues the measurements for the filter thread, stamped with
+// their arrival time.
+//
+//  - The transport is opened in the constructor, so a missing file or device, or a port that
+//    cannot be bound, is reported before anything starts (a one-line CommandError).
+//  - Links that drop (a device unplugged, a TCP peer gone) are re-opened by the transport itself;
+//    the reader logs the loss and the recovery and, with --configure-device, sets the device up
+//    again.
+//  - Without a FORMAT: prefix the format is detected from the first bytes received.
+//  - A live input never waits for the filter: when the queue is full the measurement is dropped
+//    and counted. A file input is not live, so it waits for room instead of losing data.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <thread>
+#include <vector>
+
+#include "apps/run/arrived_measurement.hpp"
+#include "apps/run/input_endpoint.hpp"
+#include "core/io/transport.hpp"
+
+namespace navfuse::apps {
+
+// A consistent-enough snapshot for status reporting (each counter is read atomically).
+struct InputCounters {
+  std::uint64_t bytes = 0;
+  std::uint64_t frames = 0;
+  std::uint64_t bad_frames = 0;
+  std::uint64_t measurements = 0;  // queued for the filter
+  std::uint64_t dropped = 0;       // lost because the filter queue was full
+  std::uint64_t reconnects = 0;
+  bool ended = false;              // end of stream (files) or a fatal error
+};
+
+class InputReader {
+ public:
+  // Opens the transport; throws CommandError naming the input when that fails.
+  InputReader(InputEndpoint endpoint, std::uint16_t index, MeasurementQueue& queue, bool configure_device);
+  ~InputReader();
+  InputReader(const InputReader&) = delete;
+  InputReader& operator=(const InputReader&) = delete;
+
+  void start();
+  void request_stop() { stop_.store(true, std::memory_order_relaxed); }
+  void join();
+
+  const std::string& name() const { return endpoint_.text; }
+  // The front-end in use ("" until detected).
+  std::string_view format() const;
+  InputCounters counters() const;
+  bool ended() const { return ended_.load(std::memory_order_acquire); }
+
+ private:
+  class QueueSink;
+
+  void run();
+  void configure_device();
+  // Collects the head of a stream without a format prefix; creates the decoder once detected.
+  void detect(std::span<const std::uint8_t> bytes, bool at_end);
+  void use_frontend(const frontends::FrontendInfo* frontend);
+  void feed(std::span<const std::uint8_t> bytes);
+  void watch_link();  // logs losses and recoveries, re-configures a replugged device
+  void publish_counters();
+
+  InputEndpoint endpoint_;
+  std::uint16_t index_;
+  MeasurementQueue& queue_;
+  bool configure_;
+  bool live_;  // not a regular file: never wait for the filter
+  std::unique_ptr<io::Transport> transport_;
+  std::unique_ptr<frontends::StreamDecoder> decoder_;
+  std::unique_ptr<QueueSink> sink_;
+  std::atomic<const frontends::FrontendInfo*> frontend_{nullptr};
+  std::vector<std::uint8_t> head_;  // bytes kept for format detection
+  bool detection_failed_logged_ = false;
+  std::uint64_t seen_reconnects_ = 0;
+  std::uint64_t seen_errors_ = 0;
+
+  std::thread thread_;
+  std::atomic<bool> stop_{false};
+  std::atomic<bool> ended_{false};
+  std::atomic<std::uint64_t> bytes_{0}, frames_{0}, bad_frames_{0}, measurements_{0}, dropped_{0},
+      reconnects_{0};
+};
+
+}  // namespace navfuse::apps

@@ -1,0 +1,43 @@
+// --mip-out: navfuse as a CV7 on the link. Streams the filter data set 0x82 (one packet group per
+// pose, frontends/mip/solution_encoder.hpp) unless a client disabled that stream or set the
+// device idle, and answers MIP commands as the CV7 does (frontends/mip/command_responder.hpp):
+// external aiding (0x13) is handed to the filter, and the filter commands with an effect on the
+// estimate — reset (0x0D,0x01), sensor-to-vehicle rotation (0x0C,0x31), antenna offsets
+// (0x0D,0x54) — are applied to the engine as well as being acknowledged.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "apps/run/device_emulator.hpp"
+#include "frontends/mip/command_responder.hpp"
+#include "frontends/mip/framer.hpp"
+
+namespace navfuse::apps {
+
+class MipDeviceEmulator final : public DeviceEmulator {
+ public:
+  std::string_view protocol() const override { return "mip"; }
+  void stream(const OutputEpoch& epoch, std::vector<std::uint8_t>& out) override;
+  void receive(io::PeerId peer, std::span<const std::uint8_t> bytes, std::vector<std::uint8_t>& reply,
+               CommandEffects& effects) override;
+
+ private:
+  frontends::mip::Framer& framer_for(io::PeerId peer);
+  // Reads the ACK/NACK fields of packet_reply_ into acked_; true when any command was accepted.
+  bool acknowledged_any();
+  bool acknowledged(std::uint8_t desc_set, std::uint8_t desc) const;
+  // Engine actions for the accepted commands of one packet.
+  void engine_effects(const frontends::mip::PacketView& packet, CommandEffects& effects) const;
+
+  frontends::mip::CommandResponder responder_;
+  std::map<io::PeerId, std::unique_ptr<frontends::mip::Framer>> framers_;  // one per client
+  std::int64_t last_epoch_gps_ns_ = 0;  // "time of arrival" of 0x13 timebase-3 aiding
+  std::vector<std::uint8_t> packet_reply_;
+  std::vector<Measurement> packet_aiding_;
+  std::vector<std::pair<std::uint8_t, std::uint8_t>> acked_;  // (set, descriptor) of the last packet
+};
+
+}  // namespace navfuse::apps

@@ -1,0 +1,41 @@
+// Where the integration tests find the navfuse binary and put their scratch files, and ports
+// that do not collide with other test processes running at the same time on this machine.
+#pragma once
+
+#include <unistd.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace navfuse::test {
+
+inline std::string navfuse_binary() { return NAVFUSE_BINARY; }
+
+// A fresh directory for the current test (removed by the fixture that made it).
+inline std::filesystem::path scratch_dir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  auto dir = std::filesystem::temp_directory_path() /
+             ("navfuse_it_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" + info->name());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+inline std::string write_file(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+  return path.string();
+}
+
+// An LCM multicast URL private to this process and `salt`: loopback only (ttl=0), on a port
+// derived from the pid, so concurrent test runs (other build trees, other tests) never hear
+// each other.
+inline std::string private_lcm_url(int salt) {
+  const int port = 20000 + static_cast<int>((static_cast<unsigned>(::getpid()) * 16u + static_cast<unsigned>(salt)) % 40000u);
+  return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0";
+}
+
+}  // namespace navfuse::test
