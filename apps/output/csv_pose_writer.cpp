@@ -1,0 +1,72 @@
+#include "apps/output/csv_pose_writer.hpp"
+
+#include <charconv>
+#include <cmath>
+
+#include "core/rotation/rotation.hpp"
+
+namespace navfuse::apps {
+namespace {
+
+constexpr const char* kHeader =
+    "time_s,time_source,mode,lat_deg,lon_deg,height_m,vn_mps,ve_mps,vd_mps,roll_deg,pitch_deg,yaw_deg,"
+    "pos_std_n_m,pos_std_e_m,pos_std_d_m,vel_std_n_mps,vel_std_e_mps,vel_std_d_mps,roll_std_deg,"
+    "pitch_std_deg,yaw_std_deg\n";
+
+void append_fixed(std::string& row, double value, int decimals) {
+  row += ',';
+  if (!std::isfinite(value)) {
+    row += "nan";
+    return;
+  }
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed, decimals);
+  row.append(buf, r.ptr);
+}
+
+// Whole seconds and nanoseconds separately: a double cannot hold GPS ns exactly.
+void append_time(std::string& row, std::int64_t time_ns) {
+  char buf[40];
+  std::int64_t s = time_ns / 1'000'000'000;
+  std::int64_t ns = time_ns % 1'000'000'000;
+  if (ns < 0) {
+    ns += 1'000'000'000;
+    --s;
+  }
+  auto r = std::to_chars(buf, buf + sizeof buf, s);
+  row.append(buf, r.ptr);
+  row += '.';
+  char frac[9];
+  for (int i = 8; i >= 0; --i, ns /= 10) frac[i] = static_cast<char>('0' + ns % 10);
+  row.append(frac, 9);
+}
+
+}  // namespace
+
+CsvPoseWriter::CsvPoseWriter(const std::string& path) : file_(path) {
+  file_.write(kHeader);
+  row_.reserve(512);
+}
+
+void CsvPoseWriter::on_pose(const PoseEpoch& epoch) {
+  const NavSolution& s = epoch.solution;
+  constexpr double d = rot::kRadToDeg;
+  row_.clear();
+  append_time(row_, s.header.time_ns);
+  row_ += ',';
+  row_ += to_string(s.header.time_source);
+  row_ += ',';
+  row_ += to_string(s.mode);
+  append_fixed(row_, s.lat_rad * d, 10);
+  append_fixed(row_, s.lon_rad * d, 10);
+  append_fixed(row_, s.height_m, 4);
+  for (int i = 0; i < 3; ++i) append_fixed(row_, s.vel_ned_mps[i], 5);
+  for (int i = 0; i < 3; ++i) append_fixed(row_, s.rpy_rad[i] * d, 6);
+  for (int i = 0; i < 3; ++i) append_fixed(row_, s.pos_std_ned_m[i], 4);
+  for (int i = 0; i < 3; ++i) append_fixed(row_, s.vel_std_ned_mps[i], 5);
+  for (int i = 0; i < 3; ++i) append_fixed(row_, s.att_std_rpy_rad[i] * d, 6);
+  row_ += '\n';
+  file_.write(row_);
+}
+
+}  // namespace navfuse::apps

@@ -1,0 +1,32 @@
+// --csv: one row per pose, for spreadsheets and plots. Columns (header row first):
+//   time_s          measurement time in seconds on the IMU stream's time base: GPS seconds since
+//                   1980-01-06 when time_source is "gps" (9 decimals, exact to the ns)
+//   time_source     gps | device | host | unknown (core to_string(TimeSource))
+//   mode            filter mode (invalid, initializing, vertical_gyro, ahrs, navigation, ...)
+//   lat_deg, lon_deg, height_m          WGS-84, ellipsoidal height
+//   vn_mps, ve_mps, vd_mps              NED velocity
+//   roll_deg, pitch_deg, yaw_deg        vehicle FRD attitude, 3-2-1 Euler
+//   pos_std_{n,e,d}_m, vel_std_{n,e,d}_mps, {roll,pitch,yaw}_std_deg   1-sigma
+// Numbers use std::to_chars with fixed decimals: independent of the locale, so the same run
+// writes the same bytes anywhere.
+#pragma once
+
+#include <string>
+
+#include "apps/output/output_file.hpp"
+#include "apps/output/pose_writer.hpp"
+
+namespace navfuse::apps {
+
+class CsvPoseWriter final : public PoseWriter {
+ public:
+  explicit CsvPoseWriter(const std::string& path);
+  void on_pose(const PoseEpoch& epoch) override;
+  void commit() override { file_.commit(); }
+
+ private:
+  OutputFile file_;
+  std::string row_;  // reused
+};
+
+}  // namespace navfuse::apps

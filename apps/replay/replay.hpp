@@ -1,0 +1,48 @@
+// `navfuse replay`: logs in, filter, pose outputs and a summary out, as fast as the machine
+// allows. The command line (replay_command.hpp) is a thin layer over run_replay(), which tests
+// and benchmarks call in-process.
+//
+// Flow: inputs are resolved ([FORMAT:]PATH, format detected from the bytes otherwise), decoded
+// a chunk at a time and merged by measurement time (MeasurementMerger); measurements on another
+// clock than the IMU's are rejected as "time_base" (TimeBaseGate); everything else goes to
+// filter::Engine. After every IMU sample the solution goes to the writers; at output.rate_hz
+// (0 = every IMU sample) it is also a pose: written as FusionEngine / MIP / CSV and compared with
+// truth when given. Output files appear only complete (OutputFile); a failure leaves none.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "apps/common/summary.hpp"
+#include "core/config/config.hpp"
+
+namespace navfuse::apps {
+
+struct ReplayOptions {
+  std::string config_path;  // empty: defaults of the device profile matching the first input
+  std::vector<std::string> inputs;
+  std::string fe_out, mip_out, csv_out;
+  std::string truth_path;
+  std::optional<double> output_rate_hz;  // overrides the config's output.rate_hz
+  bool allow_truncated = false;
+  bool progress = false;  // progress bar on stderr (only drawn when it is a terminal)
+};
+
+struct ReplayResult {
+  Summary summary;
+  std::uint64_t imu_samples = 0;  // IMU samples given to the filter
+  std::uint64_t poses = 0;        // pose epochs written
+  std::vector<std::string> truncated_inputs;
+  std::string accuracy_text;      // printable accuracy table (with --truth)
+};
+
+// Throws CommandError with a one-line reason on bad input or config.
+ReplayResult run_replay(const ReplayOptions& options);
+
+// The configuration for a replay: the file when given (errors name the key), else the defaults
+// of the device profile that matches the format ("vn" -> vn300, "mip" -> cv7, ...).
+config::Config replay_config(const std::string& config_path, std::string_view first_format);
+
+}  // namespace navfuse::apps

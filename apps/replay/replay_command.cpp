@@ -1,0 +1,56 @@
+#include "apps/replay/replay_command.hpp"
+
+#include <iostream>
+#include <memory>
+
+#include "apps/common/summary.hpp"
+#include "apps/replay/replay.hpp"
+
+namespace navfuse::apps {
+namespace {
+
+struct ReplayArgs {
+  ReplayOptions options;
+  std::string summary_json;
+  double rate_hz = -1.0;
+  bool quiet = false;
+};
+
+int run(ReplayArgs& args) {
+  if (args.rate_hz >= 0.0) args.options.output_rate_hz = args.rate_hz;
+  args.options.progress = !args.quiet;
+  const ReplayResult result = run_replay(args.options);
+  if (!args.summary_json.empty()) write_json_file(args.summary_json, result.summary.to_json(/*decode_only=*/false));
+  for (const auto& path : result.truncated_inputs) {
+    std::cerr << "navfuse: warning: '" << path << "' ends with an incomplete frame (replayed up to it)\n";
+  }
+  if (!args.quiet) {
+    result.summary.print(std::cout, /*decode_only=*/false);
+    std::cout << "poses: " << result.poses << "\n" << result.accuracy_text;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_replay_command(CLI::App& root, int& exit_code) {
+  auto args = std::make_shared<ReplayArgs>();
+  ReplayOptions& o = args->options;
+  CLI::App* sub = root.add_subcommand("replay", "Replay logs through the filter as fast as possible");
+  sub->add_option("INPUT", o.inputs, "[FORMAT:]PATH, several merged by measurement time; FORMAT one of fe, mip, vn, "
+                                     "unicore (detected when omitted)")
+      ->required();
+  sub->add_option("--config", o.config_path, "YAML configuration (default: the device profile of the first input)");
+  sub->add_option("--fe-out", o.fe_out, "Write FusionEngine Pose/PoseAux/GNSSInfo/IMUOutput to this file");
+  sub->add_option("--mip-out", o.mip_out, "Write MIP filter (0x82) packets to this file");
+  sub->add_option("--csv", o.csv_out, "Write one CSV row per pose to this file");
+  sub->add_option("--summary-json", args->summary_json, "Write the summary as JSON to this file");
+  sub->add_option("--truth", o.truth_path, "Truth CSV (navfuse sim --truth): report the error against it");
+  sub->add_option("--rate", args->rate_hz, "Pose output rate in Hz, overriding output.rate_hz (0 = every IMU sample)")
+      ->check(CLI::NonNegativeNumber);
+  sub->add_flag("--allow-truncated", o.allow_truncated, "Replay an input whose last frame is cut off");
+  sub->add_flag("-q,--quiet", args->quiet, "Print only errors");
+  sub->callback([args, &exit_code] { exit_code = run(*args); });
+}
+
+}  // namespace navfuse::apps

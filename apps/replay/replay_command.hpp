@@ -1,0 +1,13 @@
+// `navfuse replay [--config F] INPUT... [--fe-out F.p1log] [--mip-out F.mip] [--csv F.csv]
+//                 [--summary-json F] [--truth F.csv] [--rate HZ] [--allow-truncated] [--quiet]`
+// (DESIGN.md, contract): see replay.hpp for what it does.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace navfuse::apps {
+
+// Adds the subcommand to `root`; its callback stores the exit status in `exit_code`.
+void add_replay_command(CLI::App& root, int& exit_code);
+
+}  // namespace navfuse::apps

@@ -1,0 +1,189 @@
+#include "apps/simcmd/sim_command.hpp"
+
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "apps/common/command_error.hpp"
+#include "apps/common/frontend_registry.hpp"
+#include "apps/output/output_file.hpp"
+#include "apps/sim/scenarios.hpp"
+#include "apps/sim/simulator.hpp"
+#include "apps/sim/truth_csv.hpp"
+#include "apps/simcmd/device_solution_model.hpp"
+
+namespace navfuse::apps {
+namespace {
+
+bool is_odometry(MeasurementKind k) {
+  return k == MeasurementKind::kWheelSpeed || k == MeasurementKind::kVehicleSpeed || k == MeasurementKind::kWheelTicks;
+}
+
+const frontends::FrontendInfo& frontend_or_throw(std::string_view format) {
+  const auto* f = find_frontend(format);
+  if (f == nullptr) {
+    throw CommandError("unknown or unavailable format '" + std::string(format) + "' (available: " + known_formats() + ")");
+  }
+  return *f;
+}
+
+// The truth CSV through the simulator's writer, moved into the output file in blocks.
+class TruthSink {
+ public:
+  explicit TruthSink(const std::string& path) : file_(path), writer_(text_) {}
+  void write(const sim::TruthSample& s) {
+    writer_.write(s);
+    ++rows_;
+    if (rows_ % 1024 == 0) drain();
+  }
+  void commit() {
+    drain();
+    file_.commit();
+  }
+  std::uint64_t rows() const { return rows_; }
+
+ private:
+  void drain() {
+    file_.write(text_.str());
+    text_.str(std::string());
+  }
+  OutputFile file_;
+  std::ostringstream text_;
+  sim::TruthCsvWriter writer_;
+  std::uint64_t rows_ = 0;
+};
+
+}  // namespace
+
+SimReport run_sim(const SimOptions& options) {
+  sim::Scenario scenario;
+  try {
+    scenario = sim::make_scenario(options.scenario);
+  } catch (const std::invalid_argument& e) {
+    throw CommandError(e.what());
+  }
+  if (options.seed) scenario.seed = *options.seed;
+  const frontends::FrontendInfo& frontend = frontend_or_throw(options.format);
+  const frontends::FrontendInfo* wheel_frontend = nullptr;
+  if (!options.wheel_out_path.empty()) wheel_frontend = &frontend_or_throw("fe");
+
+  DeviceErrorClass device = device_error_class(options.format, scenario.imu.rate_hz);
+  if (options.device_rate_hz) device.rate_hz = *options.device_rate_hz;
+  std::optional<DeviceSolutionModel> device_model;
+  if (device.rate_hz > 0.0) device_model.emplace(device, scenario.start_time_ns, scenario.seed);
+
+  std::unique_ptr<sim::Simulator> simulator;
+  try {
+    simulator = std::make_unique<sim::Simulator>(scenario);
+  } catch (const std::invalid_argument& e) {
+    throw CommandError("scenario '" + options.scenario + "': " + e.what());
+  }
+
+  OutputFile out(options.out_path);
+  std::optional<OutputFile> wheel_out;
+  if (wheel_frontend) wheel_out.emplace(options.wheel_out_path);
+  std::optional<TruthSink> truth;
+  if (!options.truth_path.empty()) truth.emplace(options.truth_path);
+
+  auto encoder = frontend.make_encoder();
+  auto wheel_encoder = wheel_frontend ? wheel_frontend->make_encoder() : nullptr;
+  std::vector<std::uint8_t> bytes;
+  bytes.reserve(4096);
+  SimReport report;
+  const auto emit = [&](const Measurement& m, frontends::MeasurementEncoder& enc, OutputFile& file,
+                        std::map<std::string, std::uint64_t>& written) {
+    bytes.clear();
+    const std::string kind(to_string(kind_of(m)));
+    if (!enc.encode(m, bytes)) {
+      ++report.dropped[kind];
+      return;
+    }
+    file.write(bytes);
+    ++written[kind];
+  };
+
+  Measurement m;
+  NavSolution solution;
+  while (simulator->next(m)) {
+    const MeasurementKind kind = kind_of(m);
+    if (wheel_encoder && is_odometry(kind)) {
+      emit(m, *wheel_encoder, *wheel_out, report.wheel_written);
+      continue;
+    }
+    emit(m, *encoder, out, report.written);
+    if (kind != MeasurementKind::kImu) continue;
+    if (truth) truth->write(simulator->truth());
+    if (device_model && device_model->step(simulator->truth(), solution)) emit(solution, *encoder, out, report.written);
+  }
+
+  out.commit();
+  report.out_bytes = out.bytes_written();
+  if (wheel_out) {
+    wheel_out->commit();
+    report.wheel_bytes = wheel_out->bytes_written();
+  }
+  if (truth) {
+    truth->commit();
+    report.truth_rows = truth->rows();
+  }
+  return report;
+}
+
+namespace {
+
+void print_report(const SimOptions& o, const SimReport& r, std::ostream& os) {
+  const auto counts = [&](const std::map<std::string, std::uint64_t>& c) {
+    for (const auto& [kind, n] : c) os << " " << kind << "=" << n;
+  };
+  os << o.out_path << " [" << o.format << "]: " << r.out_bytes << " bytes;";
+  counts(r.written);
+  os << "\n";
+  if (!o.wheel_out_path.empty()) {
+    os << o.wheel_out_path << " [fe]: " << r.wheel_bytes << " bytes;";
+    counts(r.wheel_written);
+    os << "\n";
+  }
+  if (!o.truth_path.empty()) os << o.truth_path << ": " << r.truth_rows << " truth rows\n";
+  if (!r.dropped.empty()) {
+    os << "not carried by " << o.format << " (dropped):";
+    counts(r.dropped);
+    os << "\n";
+  }
+}
+
+}  // namespace
+
+void add_sim_command(CLI::App& root, int& exit_code) {
+  struct Args {
+    SimOptions options;
+    std::uint64_t seed = 0;
+    double device_rate_hz = -1.0;
+    bool quiet = false;
+  };
+  auto args = std::make_shared<Args>();
+  SimOptions& o = args->options;
+  CLI::App* sub = root.add_subcommand("sim", "Simulate a scenario and write it as a device log");
+  sub->add_option("--scenario", o.scenario, "Scenario name (static_start, drive_outage, rtk_drive, drive_short, ...)")
+      ->required();
+  sub->add_option("--format", o.format, "Device protocol of the log")
+      ->required()
+      ->check(CLI::IsMember({"vn", "mip", "fe", "unicore"}));
+  sub->add_option("--out", o.out_path, "Device log to write")->required();
+  sub->add_option("--truth", o.truth_path, "Also write the truth as CSV");
+  CLI::Option* seed = sub->add_option("--seed", args->seed, "Random seed (default: the scenario's)");
+  sub->add_option("--wheel-out", o.wheel_out_path, "Write wheel/vehicle speed to this FusionEngine log instead");
+  sub->add_option("--device-rate", args->device_rate_hz, "Device INS solution rate in Hz (0: none)")
+      ->check(CLI::NonNegativeNumber);
+  sub->add_flag("-q,--quiet", args->quiet, "Print only errors");
+  sub->callback([args, seed, &exit_code] {
+    if (seed->count() > 0) args->options.seed = args->seed;
+    if (args->device_rate_hz >= 0.0) args->options.device_rate_hz = args->device_rate_hz;
+    const SimReport report = run_sim(args->options);
+    if (!args->quiet) print_report(args->options, report, std::cout);
+    exit_code = 0;
+  });
+}
+
+}  // namespace navfuse::apps

@@ -1,0 +1,42 @@
+// `navfuse sim --scenario NAME --format vn|mip|fe|unicore --out F [--truth F.csv] [--seed N]
+//              [--wheel-out F.p1log] [--device-rate HZ] [--quiet]`
+// Runs a named simulator scenario (apps/sim/scenarios.hpp) and writes what the device would
+// have logged, through the front-end's own MeasurementEncoder: IMU, GNSS and, where the protocol
+// carries it, wheel speed, plus a device INS solution (device_solution_model.hpp); the truth CSV
+// with --truth; and the wheel / vehicle speed as a FusionEngine sensor log with --wheel-out (for
+// devices such as the VN-300 that have no wheel input).
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace navfuse::apps {
+
+struct SimOptions {
+  std::string scenario;
+  std::string format;
+  std::string out_path;
+  std::string truth_path;
+  std::string wheel_out_path;
+  std::optional<std::uint64_t> seed;      // default: the scenario's
+  std::optional<double> device_rate_hz;   // default: the device class's; 0 = no device solution
+};
+
+struct SimReport {
+  std::map<std::string, std::uint64_t> written;  // measurements per kind in the device log
+  std::map<std::string, std::uint64_t> wheel_written;
+  std::map<std::string, std::uint64_t> dropped;  // kinds the protocol cannot carry
+  std::uint64_t truth_rows = 0;
+  std::uint64_t out_bytes = 0, wheel_bytes = 0;
+};
+
+// Throws CommandError with a one-line reason (unknown scenario or format, unwritable file).
+SimReport run_sim(const SimOptions& options);
+
+void add_sim_command(CLI::App& root, int& exit_code);
+
+}  // namespace navfuse::apps
