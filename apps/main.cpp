@@ -7,6 +7,8 @@
 #include "apps/aid/aid_command.hpp"
 #include "apps/common/command_error.hpp"
 #include "apps/decode/decode_command.hpp"
+#include "apps/replay/replay_command.hpp"
+#include "apps/simcmd/sim_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"navfuse: loosely-coupled GNSS/INS fusion engine"};
@@ -14,6 +16,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "navfuse 0.1.0");
   int exit_code = 0;
   navfuse::apps::add_decode_command(app, exit_code);
+  navfuse::apps::add_replay_command(app, exit_code);
+  navfuse::apps::add_sim_command(app, exit_code);
   navfuse::apps::add_aid_command(app, exit_code);
   try {
     app.parse(argc, argv);
