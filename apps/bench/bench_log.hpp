@@ -1,0 +1,48 @@
+// What `navfuse bench` takes from a log: it runs the log's sensor data through the filter exactly
+// as `navfuse replay` does (same input merge, time-base gate, configuration and pose output
+// rate, so the poses are the ones replay writes), and keeps, alongside navfuse's poses, the
+// device's own solution from the same log and the times of its GNSS fixes.
+//
+// The device solution is taken from one input: the first that carries one (a second device's
+// solutions are counted and left out). It must be on the IMU's time base, or the two cannot be
+// aligned: GPS time for both, or the same device's own clock.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "apps/bench/solution_track.hpp"
+#include "apps/common/summary.hpp"
+#include "core/measurements/measurements.hpp"
+
+namespace navfuse::apps::bench {
+
+struct BenchLogOptions {
+  std::vector<std::string> inputs;  // [FORMAT:]PATH
+  std::string config_path;          // empty: the device profile of the first input
+  bool allow_truncated = false;
+  bool progress = false;  // report progress of long logs on stderr
+};
+
+struct BenchLog {
+  SolutionTrack navfuse;  // navfuse's poses at output.rate_hz, every mode
+  SolutionTrack device;   // the device's own solutions, every mode
+  std::optional<std::size_t> device_input;  // index into `inputs` of the device's stream
+  std::string device_format;                // "vn", "mip", "unicore", "fe"
+  std::uint64_t other_device_solutions = 0;  // from a second input, not compared
+  std::vector<std::int64_t> gnss_fix_times_ns;  // sorted
+  std::int64_t start_ns = 0;                     // first IMU sample
+  std::int64_t end_ns = 0;                       // last IMU sample
+  TimeSource time_source = TimeSource::kUnknown;  // the IMU's (and so navfuse's) time base
+  std::uint64_t imu_samples = 0;
+  double output_rate_hz = 0.0;
+  Summary summary;  // inputs and decoded counts, as replay reports them
+};
+
+// Throws CommandError with a one-line reason: unreadable input, bad config, no IMU samples,
+// a device solution on another time base than the IMU.
+BenchLog collect_bench_log(const BenchLogOptions& options);
+
+}  // namespace navfuse::apps::bench

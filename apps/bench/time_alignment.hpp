@@ -1,0 +1,57 @@
+// Time alignment of two solutions for `navfuse bench`: one solution is sampled at the other's
+// times by interpolating between its two neighbouring samples.
+//
+// Interpolation never invents data: a time before the first or after the last sample is
+// "outside", and a time between two neighbours further apart than the gap limit is in a "gap"
+// (a device that stopped reporting, a solution that lost validity, a filter restart). Both are
+// skipped and counted rather than bridged, because a straight line across a dropout hides exactly
+// the behaviour a benchmark is meant to show.
+//
+// Between neighbours: position (latitude, longitude, height), velocity and the uncertainties
+// are linear in time; each Euler angle is linear along the shorter arc (a heading going from
+// 179 deg to -179 deg passes through 180, not through 0), as apps/replay/truth_track.hpp does for
+// truth. The mode, validity and status of the earlier neighbour apply (they are step functions).
+// At the output rates compared (10-200 Hz) the linearisation error is well under a millimetre.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "apps/bench/solution_track.hpp"
+
+namespace navfuse::apps::bench {
+
+// Gap limit used unless the user gives one: this many median sample intervals. 3 tolerates one or
+// two lost messages of a steady stream yet rejects a real dropout.
+inline constexpr double kDefaultGapIntervals = 3.0;
+
+// Median interval between consecutive samples (0 with fewer than two samples).
+std::int64_t median_interval_ns(const std::vector<const TrackSample*>& samples);
+// kDefaultGapIntervals median intervals (0 with fewer than two samples: nothing to bridge).
+std::int64_t default_max_gap_ns(const std::vector<const TrackSample*>& samples);
+
+class TrackInterpolator {
+ public:
+  enum class Miss { kNone, kOutside, kGap };
+
+  // `samples` in strictly increasing time order (as SolutionTrack::with() gives them); they must
+  // outlive the interpolator.
+  TrackInterpolator(std::vector<const TrackSample*> samples, std::int64_t max_gap_ns);
+
+  // The track at `time_ns`: a sample itself when the time matches one, else interpolated between
+  // its neighbours; nullopt when outside the track or in a gap (`miss` says which).
+  std::optional<TrackSample> at(std::int64_t time_ns, Miss* miss = nullptr) const;
+
+  std::int64_t max_gap_ns() const { return max_gap_ns_; }
+  bool empty() const { return samples_.empty(); }
+
+ private:
+  std::vector<const TrackSample*> samples_;
+  std::int64_t max_gap_ns_;
+};
+
+// Linear interpolation between `a` and `b` at fraction f in [0, 1] (see the header comment).
+TrackSample interpolate(const TrackSample& a, const TrackSample& b, double f);
+
+}  // namespace navfuse::apps::bench
