@@ -39,6 +39,13 @@ bool parse_number(std::string_view s, bool hex, double& out) {
   return ec == std::errc{} && p == s.data() + s.size();
 }
 
+// A parsed field as an integer in [0, max], or nullopt (not integral, out of range, NaN: from_chars
+// accepts "nan" and "inf", and casting those to an integer would be undefined).
+std::optional<unsigned> integral(double x, double max) {
+  if (!(x >= 0.0 && x <= max) || x != std::floor(x)) return std::nullopt;
+  return static_cast<unsigned>(x);
+}
+
 Eigen::Vector3d v3(std::span<const double> v, std::size_t at) { return {v[at], v[at + 1], v[at + 2]}; }
 
 // Field offsets shared by the GNSS (58/59/103/104) and INS (63/64) solution registers.
@@ -55,7 +62,7 @@ Eigen::Vector3d rpy_from_ypr_deg(const Eigen::Vector3d& ypr_deg) {
 }
 
 std::optional<Stamp> gps_stamp(double week, double tow_s) {
-  if (!(week > 0 && week < 65536 && tow_s >= 0 && tow_s < static_cast<double>(time::kSecondsPerWeek)))
+  if (!(week > 0 && week <= kMaxPlausibleGpsWeek && tow_s >= 0 && tow_s < static_cast<double>(time::kSecondsPerWeek)))
     return std::nullopt;
   return Stamp{time::gps_ns_from_week_tow(static_cast<std::int32_t>(week), tow_s), TimeSource::kGps};
 }
@@ -190,8 +197,11 @@ bool AsciiMapper::map_register(int id, std::span<const double> v, DecodeSink& si
     return attitude(rot::quat_from_rpy(rpy), rpy);
   };
   auto gnss = [&](std::uint8_t receiver, bool ecef) {
-    const auto fix = fix_from_vn(static_cast<std::uint8_t>(v[gnss_at::kFix]));
-    if (!fix || v[gnss_at::kFix] != std::floor(v[gnss_at::kFix])) return false;
+    const auto fix_field = integral(v[gnss_at::kFix], 255);
+    const auto num_sats = integral(v[gnss_at::kNumSats], 255);
+    if (!fix_field || !num_sats) return false;
+    const auto fix = fix_from_vn(static_cast<std::uint8_t>(*fix_field));
+    if (!fix) return false;
     if (const auto s = gps_stamp(v[gnss_at::kWeek], v[gnss_at::kTow])) {
       stamp = *s;
       clock_.note_gps(s->time_ns);
@@ -204,7 +214,7 @@ bool AsciiMapper::map_register(int id, std::span<const double> v, DecodeSink& si
     p.lon_rad = llh.lon_rad;
     p.height_m = llh.height_m;
     p.fix = *fix;
-    p.num_sats = static_cast<std::uint8_t>(std::clamp(v[gnss_at::kNumSats], 0.0, 255.0));
+    p.num_sats = static_cast<std::uint8_t>(*num_sats);
     p.receiver_id = receiver;
     const Eigen::Vector3d sd = v3(v, gnss_at::kPosStd);
     const Eigen::Matrix3d c_en = geo::rot_ecef_from_ned(llh.lat_rad, llh.lon_rad);
@@ -226,13 +236,15 @@ bool AsciiMapper::map_register(int id, std::span<const double> v, DecodeSink& si
     sink.on_measurement(vel);
     return true;
   };
-  auto ins = [&](bool ecef) {
+  auto ins = [&](bool ecef) -> bool {
     if (const auto s = gps_stamp(v[ins_at::kWeek], v[ins_at::kTow])) {
       stamp = *s;
       clock_.note_gps(s->time_ns);
     }
     NavSolution s = from_ypr(ins_at::kYpr);
-    const auto raw = static_cast<std::uint16_t>(std::clamp(v[ins_at::kStatus], 0.0, 65535.0));
+    const auto status = integral(v[ins_at::kStatus], 65535);
+    if (!status) return false;
+    const auto raw = static_cast<std::uint16_t>(*status);
     const InsStatus st = decode_ins_status(raw);
     s.device_status = raw;
     s.mode = nav_mode_of(st, s.rpy_rad.cwiseAbs().maxCoeff() > 0.0);
@@ -258,6 +270,7 @@ bool AsciiMapper::map_register(int id, std::span<const double> v, DecodeSink& si
       s.header.valid |= NavSolution::kValidPosition | NavSolution::kValidVelocity | NavSolution::kValidPositionStd |
                         NavSolution::kValidVelocityStd;
     sink.on_measurement(s);
+    return true;
   };
   auto ins_state = [&](bool ecef) {
     NavSolution s = from_ypr(0);
@@ -336,8 +349,8 @@ bool AsciiMapper::map_register(int id, std::span<const double> v, DecodeSink& si
     case reg::kGnssEcef: return gnss(0, true);
     case reg::kGnss2Lla: return gnss(1, false);
     case reg::kGnss2Ecef: return gnss(1, true);
-    case reg::kInsLla: ins(false); return true;
-    case reg::kInsEcef: ins(true); return true;
+    case reg::kInsLla: return ins(false);
+    case reg::kInsEcef: return ins(true);
     case reg::kInsStateLla: ins_state(false); return true;
     case reg::kInsStateEcef: ins_state(true); return true;
     case reg::kDeltaThetaVel: {

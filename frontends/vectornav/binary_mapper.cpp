@@ -28,7 +28,8 @@ std::optional<std::int64_t> plausible_ns(std::uint64_t ns) {
 
 // GPS time of week + week as carried by the Time and GNSS groups (both in ns and weeks).
 std::optional<std::int64_t> gps_from_week_tow(std::uint16_t week, std::uint64_t tow_ns) {
-  if (week == 0 || tow_ns >= static_cast<std::uint64_t>(time::kNsPerWeek)) return std::nullopt;
+  if (week == 0 || week > kMaxPlausibleGpsWeek || tow_ns >= static_cast<std::uint64_t>(time::kNsPerWeek))
+    return std::nullopt;
   return time::gps_ns_from_week_tow_ns(week, static_cast<std::int64_t>(tow_ns));
 }
 

@@ -6,6 +6,7 @@
 #include "core/bytes/checks.hpp"
 #include "frontends/vectornav/ascii_registers.hpp"
 #include "frontends/vectornav/binary_layout.hpp"
+#include "frontends/vectornav/float_cast.hpp"
 
 namespace navfuse::frontends::vn::cmd {
 namespace {
@@ -20,7 +21,7 @@ constexpr std::size_t kBinaryOutputFixedFields = 2;  // AsyncMode, RateDivisor
 // Shortest text that reads back as the same float (registers hold binary32 values).
 std::string num(double v) {
   char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, static_cast<float>(v));
+  const auto r = std::to_chars(buf, buf + sizeof buf, to_f32(v));
   return std::string(buf, r.ptr);
 }
 
@@ -253,14 +254,14 @@ std::optional<Eigen::Vector3d> parse_vector3(const Reply& r, int id) {
 
 std::optional<InsBasicConfig> parse_ins_basic_config(const Reply& r) {
   const auto v = parse_doubles<4>(r, reg::kInsBasicConfig);
-  if (!v || (*v)[0] < 0 || (*v)[0] > 255) return std::nullopt;
+  if (!v || !((*v)[0] >= 0 && (*v)[0] <= 255)) return std::nullopt;  // also refuses NaN
   return InsBasicConfig{static_cast<std::uint8_t>((*v)[0]), (*v)[1] != 0, (*v)[2] != 0};
 }
 
 std::optional<VelocityAidingControl> parse_velocity_aiding_control(const Reply& r) {
   const auto v = parse_doubles<3>(r, reg::kVelAidControl);
   if (!v) return std::nullopt;
-  return VelocityAidingControl{(*v)[0] != 0, static_cast<float>((*v)[1])};
+  return VelocityAidingControl{(*v)[0] != 0, to_f32((*v)[1])};
 }
 
 std::optional<CompassBaseline> parse_compass_baseline(const Reply& r) {

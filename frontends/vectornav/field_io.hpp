@@ -23,7 +23,6 @@ using Names3 = std::array<std::string_view, 3>;
 class FieldReader {
  public:
   explicit FieldReader(bytes::LeReader& r) : r_(r) {}
-  static constexpr bool kReading = true;
   template <typename T>
   void field(std::string_view, T& v) { v = r_.read<T>(); }
   template <typename T, std::size_t N>
@@ -42,7 +41,6 @@ class FieldReader {
 class FieldWriter {
  public:
   explicit FieldWriter(bytes::LeWriter& w) : w_(w) {}
-  static constexpr bool kReading = false;
   template <typename T>
   void field(std::string_view, const T& v) { w_.write(v); }
   template <typename T, std::size_t N>
@@ -62,7 +60,6 @@ class FieldWriter {
 class FieldDescriber {
  public:
   FieldDescriber(FrameRecord& record, std::string_view prefix) : record_(record), prefix_(prefix) {}
-  static constexpr bool kReading = false;
   template <typename T>
   void field(std::string_view name, const T& v) {
     std::string key;

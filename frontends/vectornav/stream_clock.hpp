@@ -12,6 +12,7 @@
 
 #include "core/measurements/measurements.hpp"
 #include "core/time/clock_model.hpp"
+#include "core/time/gps_time.hpp"
 
 namespace navfuse::frontends::vn {
 
@@ -22,6 +23,9 @@ struct Stamp {
 
 // Largest plausible device time: rejects uint64 fields that would wrap an int64 (year ~2126).
 inline constexpr std::uint64_t kMaxPlausibleTimeNs = std::uint64_t{1} << 62;
+// The same bound on a GPS week number (7624, year ~2126): larger weeks overflow ns arithmetic.
+inline constexpr std::uint32_t kMaxPlausibleGpsWeek =
+    static_cast<std::uint32_t>(kMaxPlausibleTimeNs / static_cast<std::uint64_t>(time::kNsPerWeek));
 
 class StreamClock {
  public:

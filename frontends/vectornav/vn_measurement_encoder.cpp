@@ -8,6 +8,7 @@
 #include "frontends/vectornav/ascii_registers.hpp"
 #include "frontends/vectornav/binary_codec.hpp"
 #include "frontends/vectornav/binary_mapper.hpp"
+#include "frontends/vectornav/float_cast.hpp"
 #include "frontends/vectornav/group_imu.hpp"
 #include "frontends/vectornav/ins_status.hpp"
 
@@ -16,9 +17,8 @@ namespace {
 
 using rot::kRadToDeg;
 
-Vec3f f3(const Eigen::Vector3d& v) {
-  return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
-}
+float f32(double v) { return to_f32(v); }
+Vec3f f3(const Eigen::Vector3d& v) { return {f32(v.x()), f32(v.y()), f32(v.z())}; }
 
 std::uint16_t imu_state(bool valid, bool saturated) {
   if (!valid) return kImuStateFailed;
@@ -87,7 +87,7 @@ bool VnMeasurementEncoder::encode_imu(const ImuSample& s, std::vector<std::uint8
   msg_.header.set(kSlotImu, imu_type::kImuStatus);
   msg_.header.set(kSlotImu, imu_type::kSensSat);
   if (s.quantity == ImuQuantity::kIncrements) {
-    f.delta_time_s = static_cast<float>(s.dt_s);
+    f.delta_time_s = f32(s.dt_s);
     f.delta_theta_deg = f3(s.gyro * kRadToDeg);  // the wire unit is degrees (L1054)
     f.delta_vel_mps = f3(s.accel);
     msg_.header.set(kSlotImu, imu_type::kDeltaTheta);
@@ -107,8 +107,7 @@ bool VnMeasurementEncoder::encode_solution(const NavSolution& s, std::vector<std
   InsFields& i = msg_.ins;
   const Eigen::Vector3d ypr_deg(s.rpy_rad.z() * kRadToDeg, s.rpy_rad.y() * kRadToDeg, s.rpy_rad.x() * kRadToDeg);
   a.ypr_deg = f3(ypr_deg);
-  a.quaternion = {static_cast<float>(s.q_nb.x()), static_cast<float>(s.q_nb.y()), static_cast<float>(s.q_nb.z()),
-                  static_cast<float>(s.q_nb.w())};  // scalar last
+  a.quaternion = {f32(s.q_nb.x()), f32(s.q_nb.y()), f32(s.q_nb.z()), f32(s.q_nb.w())};  // scalar last
   a.ypr_uncertainty_deg = f3(Eigen::Vector3d(s.att_std_rpy_rad.z(), s.att_std_rpy_rad.y(), s.att_std_rpy_rad.x()) *
                              kRadToDeg);
   i.ins_status = encode_ins_status(ins_status_of(s));
@@ -116,8 +115,8 @@ bool VnMeasurementEncoder::encode_solution(const NavSolution& s, std::vector<std
   i.vel_body_mps = f3(s.vel_body_mps);
   i.vel_ned_mps = f3(s.vel_ned_mps);
   // PosU / VelU are scalars: the largest axis sigma, so the device never looks better than m.
-  i.pos_uncertainty_m = static_cast<float>(s.pos_std_ned_m.maxCoeff());
-  i.vel_uncertainty_mps = static_cast<float>(s.vel_std_ned_mps.maxCoeff());
+  i.pos_uncertainty_m = f32(s.pos_std_ned_m.maxCoeff());
+  i.vel_uncertainty_mps = f32(s.vel_std_ned_mps.maxCoeff());
   for (unsigned t : {attitude_type::kYpr, attitude_type::kQuaternion, attitude_type::kYprU})
     msg_.header.set(kSlotAttitude, t);
   for (unsigned t : {ins_type::kInsStatus, ins_type::kPosLla, ins_type::kVelBody, ins_type::kVelNed, ins_type::kPosU,
@@ -162,7 +161,7 @@ bool VnMeasurementEncoder::encode_gnss_velocity(const GnssVelocity& v, std::vect
   GnssFields& g = msg_.gnss[v.receiver_id];
   g.fix = vn_from_fix(v.fix);
   g.vel_ned_mps = f3(v.vel_ned_mps);
-  g.vel_uncertainty_mps = static_cast<float>(std::sqrt(std::max(0.0, v.cov_ned_m2ps2.diagonal().maxCoeff())));
+  g.vel_uncertainty_mps = f32(std::sqrt(std::max(0.0, v.cov_ned_m2ps2.diagonal().maxCoeff())));
   for (unsigned t : {gnss_type::kGnssFix, gnss_type::kVelNed, gnss_type::kVelUncertainty}) msg_.header.set(slot, t);
   return finish(out);
 }

@@ -19,7 +19,6 @@ namespace {
 class RandomFiller {
  public:
   explicit RandomFiller(std::mt19937_64& rng, std::size_t max_list) : rng_(rng), max_list_(max_list) {}
-  static constexpr bool kReading = true;
   template <typename T>
   void field(std::string_view name, T& v) {
     if constexpr (std::is_floating_point_v<T>) {

@@ -5,6 +5,7 @@
 
 #include <random>
 
+#include "frontends/vectornav/ascii_sentence.hpp"
 #include "frontends/vectornav/binary_codec.hpp"
 #include "stream_fixture.hpp"
 #include "test_support.hpp"
@@ -177,6 +178,42 @@ TEST(VnRobustness, NonFiniteAndOutOfRangeFieldsAreSafe) {
   EXPECT_EQ(d.issues(DecodeIssue::kBinaryContent), 1u);
   EXPECT_EQ(sink.count(MeasurementKind::kImu), 0u);  // no interval: not a usable increment
   ASSERT_EQ(sink.count(MeasurementKind::kGnssPosition), 1u);
+}
+
+TEST(VnRobustness, NonNumericAsciiFieldsAreDecodeErrors) {
+  // Checksums are valid; the content is not: NaN/inf enums, huge weeks, too few fields, text.
+  const char* const bodies[] = {
+      "VNGPS,501342.999609,2303,nan,16,+32.89195850,-096.70376580,+00163.653,-000.005,+000.005,+000.108,+001.433,"
+      "+001.439,+003.605,+000.173,3.00E-09",
+      "VNGPS,501342.999609,2303,4,inf,+32.89195850,-096.70376580,+00163.653,-000.005,+000.005,+000.108,+001.433,"
+      "+001.439,+003.605,+000.173,3.00E-09",
+      "VNINS,501384.439541,2303,XYZ,-177.963,+000.511,+004.425,+32.89195732,-096.70376518,+00164.947,-000.014,"
+      "-000.005,-000.094,01.43,00.56,0.090",
+      "VNYPR,+010.071,+000.278",
+      "VNYPR,abc,+000.278,-002.026",
+      "VNRRG,999,1",
+      "VNERR,ZZ",
+  };
+  for (const char* b : bodies) {
+    VnStreamDecoder d;
+    test::CollectingSink sink;
+    test::decode_all(d, test::text_bytes(make_sentence(b)), sink);
+    EXPECT_EQ(d.counters().frames, 1u) << b;
+    EXPECT_EQ(d.counters().decode_errors, 1u) << b;
+    EXPECT_EQ(d.issues(DecodeIssue::kAsciiFields), 1u) << b;
+    EXPECT_TRUE(sink.measurements.empty()) << b;
+  }
+  // A GPS week beyond any plausible date is ignored, not overflowed: the sentence keeps the
+  // stream's latest (here: no) time.
+  VnStreamDecoder d;
+  test::CollectingSink sink;
+  test::decode_all(d,
+                   test::text_bytes(make_sentence(
+                       "VNGPS,501342.999609,60000,4,16,+32.89195850,-096.70376580,+00163.653,-000.005,+000.005,"
+                       "+000.108,+001.433,+001.439,+003.605,+000.173,3.00E-09")),
+                   sink);
+  ASSERT_EQ(sink.count(MeasurementKind::kGnssPosition), 1u);
+  EXPECT_EQ(header_of(sink.measurements[0]).time_source, TimeSource::kUnknown);
 }
 
 }  // namespace
