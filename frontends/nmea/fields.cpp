@@ -36,6 +36,8 @@ std::optional<T> parse_hex(std::string_view digits, std::size_t max_digits) {
 
 }  // namespace
 
+// Fields are separated by ',' although L146 says "';' (0x2C)": 0x2C is ',' and every example
+// uses it (erratum, digest §11 item 1).
 bool Fields::split(std::string_view body) {
   count_ = 0;
   std::size_t begin = 0;

@@ -13,10 +13,14 @@ constexpr std::array<std::uint8_t, 256> make_byte_classes() {
     // inside a sentence is corruption and ends it.
     table[c] = (c < 0x20 || c > 0x7E) ? 3 : 0;
   }
-  table['\r'] = 1;  // "ends with '\r' (0x0D) or '\n' (0x0A) or any combination" (L150)
+  // "ends with 'r' (0x0D) or '\n' (0x0A) or any combination" (L150): 'r' is read as '\r', the
+  // byte its hex code names (erratum, digest §11 item 2).
+  table['\r'] = 1;
   table['\n'] = 1;
   table['$'] = 2;   // every sentence starts with '$' (L142) ...
-  table['#'] = 2;   // ... except the command echo (L250-L260)
+  // ... except the command echo (L250-L260), whose checksum is unspecified (digest §11 item 5):
+  // it is framed like any sentence, with the checksum optional.
+  table['#'] = 2;
   return table;
 }
 

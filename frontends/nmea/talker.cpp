@@ -42,6 +42,7 @@ SatId sat_from_nmea(std::uint32_t n, Talker talker, Dialect dialect) {
   const auto prn = [](std::uint32_t v) { return static_cast<std::uint16_t>(v); };
   const SatSystem by_talker = talker_system(talker);
   // h51 numbers BDS 1~37 and Galileo 1~36 within their own talker (L935), overlapping SBAS.
+  // The GSV table says BDS 01~14 (L964): the wider range is accepted (digest §11 item 16).
   if (dialect == Dialect::kH51 && n >= 1 &&
       (by_talker == SatSystem::kBeidou || by_talker == SatSystem::kGalileo)) {
     return {by_talker, prn(n)};

@@ -39,6 +39,8 @@ struct ResetCommand {
 std::string encode(const ResetCommand& c);
 
 // CFGPRT (L286-L321). With only `port` set it is the read form "$CFGPRT,1".
+// The bit table (L310) omits bit5 "RTCM2.3" that the default 1185 uses (L1468), and bit9's
+// odometer protocol is documented nowhere (digest §11 item 7): neither is used here.
 inline constexpr std::uint32_t kProtoUnicore = 1u << 0;
 inline constexpr std::uint32_t kOutProtoNmea = 1u << 1;
 inline constexpr std::uint32_t kProtoRtcm32In = 1u << 7, kProtoRtcm32Out = 1u << 2;
@@ -54,6 +56,8 @@ struct CfgPrtCommand {
 std::string encode(const CfgPrtCommand& c);
 
 // CFGMSG (L324-L373): enable (1) / disable (0) one output; without `enable` it reads the state.
+// msgID is always written: what an empty (optional, L347) msgID means is undefined (digest §11
+// item 9).
 struct MessageId {
   std::uint32_t msg_class = 0;
   std::uint32_t msg_id = 0;

@@ -185,6 +185,8 @@ void UnicoreDecoder::emit_gyoacc(const Gyoacc& m, frontends::DecodeSink& sink) {
 
 void UnicoreDecoder::on_unicore(const nmea::Frame& frame, std::string_view name,
                                 frontends::DecodeSink& sink) {
+  // "GYOACC-V" carries a '-' (printed "GYOACC- V" with a stray space, L770; digest §11 item 14):
+  // names are compared whole, never split at non-letters.
   if (name == "GYOACC" || name == "GYOACC-V") {
     const auto m = decode_gyoacc(fields_, name.size() > 6);
     if (accept(m, frame, sink)) emit_gyoacc(*m, sink);

@@ -16,6 +16,8 @@
 namespace navfuse::unicore {
 
 enum class ReplyKind : std::uint8_t {
+  // "$OK" may come as "$OK", "$OK*04" or "$OK,*28": the spec shows only the first (digest §11
+  // item 4); all three parse.
   kOk = 0,      // command accepted ($OK; with AIDTIME/AIDPOS only "format accepted", L655, L674)
   kFail = 1,    // $FAIL,errorCode
   kEcho = 2,    // #<user command>
