@@ -92,13 +92,13 @@ void Ekf::reset_states(int first, const Eigen::Matrix3d& covariance) {
 }
 
 void Ekf::guard(const StateVector& floor) {
-  auto pn = p.topLeftCorner(n, n);
-  pn = 0.5 * (pn + pn.transpose()).eval();
+  // Updates and propagation leave P exactly symmetric; only the diagonal needs a floor.
   for (int i = 0; i < n; ++i) {
-    if (floor(i) > 0.0 && !(pn(i, i) >= floor(i))) pn(i, i) = floor(i);
+    if (floor(i) > 0.0 && !(p(i, i) >= floor(i))) p(i, i) = floor(i);
   }
 }
 
-bool Ekf::finite() const { return p.topLeftCorner(n, n).allFinite(); }
+// NaN or inf anywhere in P reaches the diagonal within one propagation step.
+bool Ekf::finite() const { return p.diagonal().head(n).allFinite(); }
 
 }  // namespace navfuse::filter

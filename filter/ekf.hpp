@@ -55,7 +55,7 @@ class Ekf {
   // Forgets everything known about states [first, first + count): zero correlations, new variance.
   void reset_states(int first, int count, double variance);
   void reset_states(int first, const Eigen::Matrix3d& covariance);
-  // Symmetrises and clamps non-positive variances of active states to `floor`.
+  // Clamps variances of active states below `floor` (P is kept symmetric by construction).
   void guard(const StateVector& variance_floor);
   bool finite() const;
 };

@@ -1,5 +1,6 @@
 #include "filter/filter_core.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <variant>
 
@@ -75,9 +76,16 @@ void FilterCore::propagate(const FilterOptions& o, const ImuIncrement& raw) {
   rate_b_rps = comp.dtheta_rad / comp.dt_s;
   force_b_mps2 = comp.dvel_mps / comp.dt_s;
   if (step.dt_s == 0.0) earth = LocalEarth::at(x.lat_rad, x.height_m);
+  const std::int64_t previous_ns = x.time_ns;
   strapdown_step(x, memory, comp, earth);
   step.add(comp);
-  if (step.dt_s >= o.covariance_interval_s - 1e-9) flush_covariance(o);
+  // Covariance steps end on a fixed time grid, so measurements stamped on the same grid (GNSS,
+  // odometry and the constraints at 5-20 Hz) find the covariance already current and the update
+  // costs no extra propagation.
+  const std::int64_t grid_ns = std::max<std::int64_t>(1, std::llround(o.covariance_interval_s * 1e9));
+  if (x.time_ns / grid_ns != previous_ns / grid_ns || step.dt_s >= o.covariance_interval_s - 1e-9) {
+    flush_covariance(o);
+  }
 
   update_stationary(*this, o, raw);
   apply_nonholonomic(*this, o);

@@ -32,6 +32,30 @@ StateVector process_noise_density(const FilterOptions& o) {
   return q;
 }
 
+namespace {
+
+// P <- Phi P Phi^T + Q_d on the leading N x N block, with fixed-size matrices so the compiler
+// unrolls and vectorises the products (the per-step cost that dominates the filter loop).
+template <int N>
+void discrete_step(Covariance& p, const Covariance& f, const StateVector& q, double t) {
+  using Block = Eigen::Matrix<double, N, N>;
+  const Block ft = f.template topLeftCorner<N, N>() * t;
+  Block phi = Block::Identity() + ft;
+  phi.noalias() += 0.5 * ft * ft;
+  // Q_d = Q T + (F Q + Q F^T) T^2 / 2: the first two terms of the series for
+  // integral(Phi Q Phi^T), exact enough at T <= 50 ms.
+  Block qd = (ft * q.template head<N>().asDiagonal()) * (0.5 * t);
+  qd = (qd + qd.transpose()).eval();
+  qd.diagonal() += q.template head<N>() * t;
+  Block tmp;
+  tmp.noalias() = phi * p.template topLeftCorner<N, N>();
+  Block next = qd;
+  next.noalias() += tmp * phi.transpose();
+  p.template topLeftCorner<N, N>() = 0.5 * (next + next.transpose());
+}
+
+}  // namespace
+
 void propagate_covariance(Covariance& p, int n, const NavState& x, const LocalEarth& earth,
                           const ProcessAccumulator& step, const StateVector& q) {
   const double t = step.dt_s;
@@ -73,25 +97,14 @@ void propagate_covariance(Covariance& p, int n, const NavState& x, const LocalEa
   // tilt it was levelled with. Over the filter's horizons (tau >= minutes) the GM part is a random
   // walk with the GM driving noise, which process_noise_density supplies.
 
-  auto fn = f.topLeftCorner(n, n);
-  Covariance ft;
-  ft.topLeftCorner(n, n) = fn * t;
-  Covariance phi;
-  phi.topLeftCorner(n, n).noalias() = 0.5 * ft.topLeftCorner(n, n) * ft.topLeftCorner(n, n);
-  phi.topLeftCorner(n, n) += ft.topLeftCorner(n, n);
-  phi.topLeftCorner(n, n).diagonal().array() += 1.0;
-
-  // Q_d = Q T + (F Q + Q F^T) T^2 / 2: the first two terms of the series for
-  // integral(Phi Q Phi^T), exact enough at T <= 50 ms.
-  Covariance qd;
-  qd.topLeftCorner(n, n) = (ft.topLeftCorner(n, n) * q.head(n).asDiagonal()) * (0.5 * t);
-  qd.topLeftCorner(n, n) += qd.topLeftCorner(n, n).transpose().eval();
-  qd.topLeftCorner(n, n).diagonal() += q.head(n) * t;
-
-  Covariance tmp;
-  tmp.topLeftCorner(n, n).noalias() = phi.topLeftCorner(n, n) * p.topLeftCorner(n, n);
-  p.topLeftCorner(n, n).noalias() = tmp.topLeftCorner(n, n) * phi.topLeftCorner(n, n).transpose();
-  p.topLeftCorner(n, n) += qd.topLeftCorner(n, n);
+  switch (n) {  // the possible active dimensions (StateSelection::active_dimension)
+    case sx::kCoreCount: return discrete_step<sx::kCoreCount>(p, f, q, t);
+    case sx::kWheelScale + 1: return discrete_step<sx::kWheelScale + 1>(p, f, q, t);
+    case sx::kMountYaw + 1: return discrete_step<sx::kMountYaw + 1>(p, f, q, t);
+    case sx::kLeverArm + 3: return discrete_step<sx::kLeverArm + 3>(p, f, q, t);
+    case sx::kGyroScale + 3: return discrete_step<sx::kGyroScale + 3>(p, f, q, t);
+    default: return discrete_step<sx::kCount>(p, f, q, t);
+  }
 }
 
 }  // namespace navfuse::filter

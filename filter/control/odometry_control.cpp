@@ -1,5 +1,8 @@
 #include "filter/control/odometry_control.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "filter/measurements/nonholonomic.hpp"
 #include "filter/measurements/wheel_speed.hpp"
 
@@ -28,7 +31,9 @@ FuseResult fuse_odometry(FilterCore& c, const FilterOptions& o, const VehicleSpe
 
 void apply_nonholonomic(FilterCore& c, const FilterOptions& o) {
   if (!o.land_vehicle || !c.navigating() || c.stationary.stationary) return;
-  if (seconds_since(c.x.time_ns, c.odometry.last_nhc_ns) < o.nhc_interval_s - 1e-9) return;
+  // Once per cell of a fixed time grid (aligned with the covariance steps, see FilterCore).
+  const std::int64_t grid_ns = std::max<std::int64_t>(1, std::llround(o.nhc_interval_s * 1e9));
+  if (c.odometry.last_nhc_ns != INT64_MIN && c.x.time_ns / grid_ns == c.odometry.last_nhc_ns / grid_ns) return;
   if (c.x.vel_ned_mps.norm() < o.nhc_min_speed_mps) return;
   c.odometry.last_nhc_ns = c.x.time_ns;
   const Observation obs = nonholonomic_observation(c.view(0.0), o.nhc_lever_arm_m.value_or(o.wheel_lever_arm_m),
