@@ -25,6 +25,8 @@ constexpr std::array<std::string_view, 12> kCommandEchoes = {"VNWNV", "VNRFS", "
                                                              "VNSIH", "VNASY", "VNSFB", "VNSBL", "VNBOM", "VNTAR"};
 constexpr double kPercentConverged = 100.0;  // Reg 98 PercentComplete when the compass is ready
 
+// Errata A32 (digest §10; L89, L3254-3258): field widths differ between firmware and legacy
+// modes (Reg 206), so fields are parsed as numbers between commas, never by column.
 bool parse_number(std::string_view s, bool hex, double& out) {
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
   if (s.empty()) return false;

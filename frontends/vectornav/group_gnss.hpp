@@ -17,6 +17,12 @@ inline constexpr Names3 kPosU = {"pos_std_n_m", "pos_std_e_m", "pos_std_d_m"};
 inline constexpr std::array<std::string_view, 7> kDop = {"gdop", "pdop", "tdop", "vdop", "hdop", "ndop", "edop"};
 }  // namespace gnss_names
 
+// GnssStatus (Table 2.61, L1471-1494). Errata A12: DataSource starts at bit 8 with no stated
+// width; bits 8-10 are read and only 0-3 are defined. Errata A15: "GnssStatusFlagFilterTime"
+// is Reg 144's UsedForNavTime.
+inline constexpr unsigned kGnssStatusDataSourceShift = 8;
+inline constexpr std::uint16_t kGnssStatusDataSourceMask = 0x7;
+
 template <class Io>
 void visit_sat_info(Io& io, GnssFields& f) {
   auto count = static_cast<std::uint8_t>(f.sat_info.size());
@@ -84,7 +90,14 @@ void visit_gnss_type(unsigned bit, Io& io, GnssFields& f) {
     case gnss_type::kDop: io.fields(gnss_names::kDop, f.dop); break;
     case gnss_type::kSatInfo: visit_sat_info(io, f); break;
     case gnss_type::kRawMeas: visit_raw_meas(io, f); break;
-    case gnss_type::kStatus: io.field("gnss_status", f.gnss_status); break;
+    case gnss_type::kStatus:
+      io.field("gnss_status", f.gnss_status);
+      if constexpr (std::is_same_v<Io, FieldDescriber>) {  // listing only: not a wire field
+        const auto source = static_cast<std::uint8_t>((f.gnss_status >> kGnssStatusDataSourceShift) &
+                                                      kGnssStatusDataSourceMask);
+        io.field("gnss_status_data_source", source);
+      }
+      break;
     case gnss_type::kAltMsl: io.field("alt_msl_m", f.alt_msl_m); break;
     default: break;
   }

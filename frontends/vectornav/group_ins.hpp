@@ -3,6 +3,7 @@
 
 #include "frontends/vectornav/binary_message.hpp"
 #include "frontends/vectornav/field_io.hpp"
+#include "frontends/vectornav/ins_status.hpp"
 
 namespace navfuse::frontends::vn {
 
@@ -17,10 +18,25 @@ inline constexpr Names3 kAccelEcef = {"accel_ecef_x_mps2", "accel_ecef_y_mps2", 
 inline constexpr Names3 kLinEcef = {"lin_accel_ecef_x_mps2", "lin_accel_ecef_y_mps2", "lin_accel_ecef_z_mps2"};
 }  // namespace ins_names
 
+// The decoded InsStatus bits, for listings (wire field: the raw word above).
+inline void describe_ins_status(FieldDescriber& io, std::uint16_t raw) {
+  const InsStatus s = decode_ins_status(raw);
+  io.field("ins_mode", static_cast<std::uint8_t>(s.mode));
+  io.field("ins_gnss_fix", static_cast<std::uint8_t>(s.gnss_fix));
+  io.field("ins_imu_error", static_cast<std::uint8_t>(s.imu_error));
+  io.field("ins_mag_pres_error", static_cast<std::uint8_t>(s.mag_pres_error));
+  io.field("ins_gnss_error", static_cast<std::uint8_t>(s.gnss_error));
+  io.field("ins_compass_fix", static_cast<std::uint8_t>(s.compass));
+  io.field("ins_undocumented_bits", s.undocumented_bits);
+}
+
 template <class Io>
 void visit_ins_type(unsigned bit, Io& io, InsFields& f) {
   switch (bit) {
-    case ins_type::kInsStatus: io.field("ins_status", f.ins_status); break;
+    case ins_type::kInsStatus:
+      io.field("ins_status", f.ins_status);
+      if constexpr (std::is_same_v<Io, FieldDescriber>) describe_ins_status(io, f.ins_status);
+      break;
     case ins_type::kPosLla: io.fields(ins_names::kPosLla, f.pos_lla); break;
     case ins_type::kPosEcef: io.fields(ins_names::kPosEcef, f.pos_ecef_m); break;
     case ins_type::kVelBody: io.fields(ins_names::kVelBody, f.vel_body_mps); break;

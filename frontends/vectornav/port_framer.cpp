@@ -24,6 +24,8 @@ PortFramer::Attempt PortFramer::try_binary(const std::uint8_t* p, std::size_t n)
   const std::size_t total = overhead + payload;
   if (total > n) return {Verdict::kIncomplete, 0};
   // Running the CRC over header, payload and the big-endian CRC itself gives 0 (L699, L5250).
+  // Errata A2 (digest §10): the polynomial is 0x1021 of the reference code (L624-639), not the
+  // "0x07" of Reg 30's text (L2842); errata A3: big-endian trailer, sync byte not covered.
   if (bytes::crc16_xmodem({p + 1, total - 1}) != 0) return {Verdict::kBad, 0};
   return {Verdict::kFrame, total};
 }
