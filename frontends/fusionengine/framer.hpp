@@ -4,7 +4,8 @@
 //   1. memchr for sync byte 0 (0x2E), then check sync byte 1 (0x31);
 //   2. read the 24-byte header; reserved bytes 2-3 must be 0 (every spec example, and the public
 //      client's framer, drop a candidate otherwise) and payload_size must not exceed
-//      kMaxPayloadSize (the spec gives no maximum);
+//      kMaxPayloadSize (the spec gives no maximum), nor, for a fixed-layout message type, its
+//      size plus kMaxVersionGrowth (max_payload_size(), message_catalog.hpp);
 //   3. CRC-32 over [8, 24 + payload_size) must equal the header CRC;
 //   4. on any failure restart the sync search one byte after the candidate's first byte.
 // Payload sizes need not be multiples of 4 (spec L153 vs example L891-895, digest §13 A1).
@@ -24,6 +25,7 @@
 #include "core/bytes/byte_reader.hpp"
 #include "core/bytes/checks.hpp"
 #include "frontends/common/stream_decoder.hpp"
+#include "frontends/fusionengine/message_catalog.hpp"
 #include "frontends/fusionengine/wire.hpp"
 
 namespace navfuse::fe {
@@ -122,7 +124,7 @@ class Framer {
         continue;
       }
       const Header h = parse_header(p + pos);
-      if (h.payload_size > kMaxPayloadSize) {
+      if (h.payload_size > max_payload_size(h.message_type)) {
         ++counters_.bad_frames;
         ++counters_.skipped_bytes;
         ++pos;

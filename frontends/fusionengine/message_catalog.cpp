@@ -1,6 +1,7 @@
 #include "frontends/fusionengine/message_catalog.hpp"
 
 #include <array>
+#include <type_traits>
 #include <utility>
 
 namespace navfuse::fe {
@@ -14,7 +15,35 @@ constexpr auto make_name_table(std::index_sequence<I...>) {
 }
 constexpr auto kNames = make_name_table(std::make_index_sequence<kCatalogSize>{});
 
+// A layout is fixed unless it carries counted entries / lengths (sync_lengths()) or a tail of
+// "the rest of the payload" (InputDataWrapper, STA5635IQData).
+template <class M>
+constexpr bool kFixedLayout = !requires(M m) { m.sync_lengths(); } &&
+                              !std::is_same_v<M, InputDataWrapperMessage> &&
+                              !std::is_same_v<M, Sta5635IqDataMessage>;
+
+// Bound per type id (0: no bound beyond kMaxPayloadSize); a table so the framer's check is one
+// load per frame.
+struct SizeBounds {
+  std::array<std::uint16_t, 65536> bound{};
+  constexpr SizeBounds() { fill(std::make_index_sequence<kCatalogSize>{}); }
+  template <std::size_t... I>
+  constexpr void fill(std::index_sequence<I...>) {
+    ((bound[to_u16(std::tuple_element_t<I, AllMessages>::kType)] =
+          kFixedLayout<std::tuple_element_t<I, AllMessages>>
+              ? static_cast<std::uint16_t>(std::tuple_element_t<I, AllMessages>::kSize + kMaxVersionGrowth)
+              : std::uint16_t{0}),
+     ...);
+  }
+};
+constexpr SizeBounds kSizeBounds{};
+
 }  // namespace
+
+std::uint32_t max_payload_size(std::uint16_t message_type) {
+  const std::uint16_t b = kSizeBounds.bound[message_type];
+  return b == 0 ? kMaxPayloadSize : b;
+}
 
 std::optional<std::string_view> message_name(std::uint16_t message_type) {
   for (const auto& [type, name] : kNames) {

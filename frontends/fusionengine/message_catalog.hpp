@@ -34,6 +34,14 @@ using AllMessages = std::tuple<
 
 inline constexpr std::size_t kCatalogSize = std::tuple_size_v<AllMessages>;
 
+// Payload sizes a frame header may claim before the framer treats it as corrupt. A fixed-layout
+// message may grow in newer versions ("extending the message length", spec L189), but not by
+// more than kMaxVersionGrowth bytes; variable-length and unknown types may use the full
+// kMaxPayloadSize. Without this bound, one corrupted size byte in an IMU frame makes the framer
+// wait for, and CRC, up to 16 MiB before it can resynchronise.
+inline constexpr std::uint32_t kMaxVersionGrowth = 4096;
+std::uint32_t max_payload_size(std::uint16_t message_type);
+
 // The spec's name of a message type ("Pose", "IMUOutput", ...), or nullopt for an id the spec
 // does not define.
 std::optional<std::string_view> message_name(std::uint16_t message_type);
