@@ -8,6 +8,7 @@
 #include "apps/common/command_error.hpp"
 #include "apps/decode/decode_command.hpp"
 #include "apps/replay/replay_command.hpp"
+#include "apps/run/run_command.hpp"
 #include "apps/simcmd/sim_command.hpp"
 
 int main(int argc, char** argv) {
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
   navfuse::apps::add_replay_command(app, exit_code);
   navfuse::apps::add_sim_command(app, exit_code);
   navfuse::apps::add_aid_command(app, exit_code);
+  navfuse::apps::add_run_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

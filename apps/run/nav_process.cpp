@@ -1,0 +1,235 @@
+#include "apps/run/nav_process.hpp"
+
+#include <chrono>
+
+#include "apps/common/command_error.hpp"
+#include "apps/run/fe_device_emulator.hpp"
+#include "apps/run/mip_device_emulator.hpp"
+#include "apps/run/run_log.hpp"
+#include "core/rotation/rotation.hpp"
+
+namespace navfuse::apps {
+namespace {
+
+// ~10 s of a 400 Hz IMU with its GNSS: room for a filter restart or a burst from a file input.
+constexpr std::size_t kQueueCapacity = 4096;
+constexpr std::size_t kActionQueueCapacity = 64;
+// How long the filter thread waits for a measurement before it looks at status and shutdown.
+constexpr auto kFilterWait = std::chrono::milliseconds(20);
+// Position and velocity of one GNSS epoch are decoded as two measurements; within this they
+// are one NAVFUSE_GNSS message.
+constexpr std::int64_t kSameEpochNs = 1'000'000;
+
+config::Config load_config(const std::string& path) {
+  if (path.empty()) throw CommandError("run needs --config FILE");
+  try {
+    return config::load_from_file(path);
+  } catch (const config::ConfigError& e) {
+    throw CommandError(e.what());
+  }
+}
+
+Eigen::Matrix3d mounting_of(const config::Config& c) {
+  const auto& m = c.imu.mounting_rpy_deg;
+  return rot::dcm_from_rpy(Eigen::Vector3d(m[0], m[1], m[2]) * rot::kDegToRad);
+}
+
+}  // namespace
+
+NavProcess::NavProcess(const RunOptions& options)
+    : options_(options),
+      config_(load_config(options.config_path)),
+      queue_(kQueueCapacity),
+      actions_(kActionQueueCapacity),
+      rate_(config_.output.rate_hz) {
+  if (options_.inputs.empty()) throw CommandError("run needs at least one --in URI");
+  if (!(options_.status_interval_s > 0)) throw CommandError("--status-interval must be > 0 s");
+  engine_ = std::make_unique<filter::Engine>(filter::options_from_config(config_));
+
+  // Parse every argument before opening anything: a typo in the last --in is reported without
+  // first grabbing serial ports and sockets for the others.
+  std::vector<InputEndpoint> endpoints;
+  for (const std::string& arg : options_.inputs) endpoints.push_back(parse_input_endpoint(arg));
+  const io::Uri fe_uri = options_.fe_out.empty() ? io::Uri{} : parse_output_uri(options_.fe_out, "--fe-out");
+  const io::Uri mip_uri = options_.mip_out.empty() ? io::Uri{} : parse_output_uri(options_.mip_out, "--mip-out");
+  if (options_.configure_device) {
+    for (const InputEndpoint& e : endpoints) {
+      if (e.frontend == nullptr && e.uri.scheme != io::Scheme::kFile) {
+        throw CommandError("--configure-device: give the format of '" + e.text +
+                           "' (FORMAT:URI): a device is set up before it streams anything to detect");
+      }
+    }
+  }
+
+  for (std::size_t i = 0; i < endpoints.size(); ++i) {
+    inputs_.push_back(std::make_unique<InputReader>(std::move(endpoints[i]), static_cast<std::uint16_t>(i), queue_,
+                                                    options_.configure_device));
+  }
+  if (!options_.fe_out.empty()) {
+    outputs_.push_back(std::make_unique<OutputSink>("--fe-out", fe_uri, make_fe_device_emulator(config_), queue_, actions_));
+  }
+  if (!options_.mip_out.empty()) {
+    outputs_.push_back(
+        std::make_unique<OutputSink>("--mip-out", mip_uri, std::make_unique<MipDeviceEmulator>(), queue_, actions_));
+  }
+  if (options_.lcm) lcm_ = std::make_unique<LcmService>(options_.lcm_url, mounting_of(config_), queue_, latency_);
+  for (const auto& in : inputs_) snapshots_.push_back({in->name(), {}});
+}
+
+NavProcess::~NavProcess() { stop(); }
+
+void NavProcess::start() {
+  started_ns_ = monotonic_ns();
+  next_status_ns_ = started_ns_ + static_cast<std::int64_t>(options_.status_interval_s * 1e9);
+  if (lcm_) lcm_->start();
+  for (auto& out : outputs_) out->start();
+  filter_thread_ = std::thread([this] { filter_loop(); });
+  for (auto& in : inputs_) in->start();
+}
+
+void NavProcess::stop() {
+  if (stopped_ || !filter_thread_.joinable()) return;
+  stopped_ = true;
+  // Producers first, then the filter drains the queue, then the consumers of its output flush.
+  for (auto& in : inputs_) in->request_stop();
+  for (auto& in : inputs_) in->join();
+  stop_filter_.store(true, std::memory_order_relaxed);
+  filter_thread_.join();
+  stopped_ns_ = monotonic_ns();
+  for (auto& out : outputs_) out->stop();
+  if (lcm_) lcm_->stop();
+}
+
+bool NavProcess::inputs_ended() const {
+  for (const auto& in : inputs_) {
+    if (!in->ended()) return false;
+  }
+  return true;
+}
+
+void NavProcess::filter_loop() {
+  for (;;) {
+    const bool got = queue_.pop_wait(item_, kFilterWait);
+    apply_actions();
+    if (got) process(item_);
+    if (monotonic_ns() >= next_status_ns_) report_status();
+    if (got) continue;
+    // Nothing queued: done when told to stop, or when every input has ended (an input marks
+    // itself ended only after queueing its last measurement, so the queue is then final).
+    if (stop_filter_.load(std::memory_order_relaxed) && queue_.empty()) break;
+    if (inputs_ended() && queue_.empty()) {
+      finished_.store(true, std::memory_order_release);
+      if (stop_filter_.load(std::memory_order_relaxed)) break;
+    }
+  }
+  report_status();  // the final state, for whoever watches NAVFUSE_STATUS
+}
+
+void NavProcess::process(const ArrivedMeasurement& item) {
+  const Measurement& m = item.measurement;
+  const auto kind = kind_of(m);
+  ++decoded_[static_cast<std::size_t>(kind)];
+  if (gate_.check(m)) {
+    ++time_base_[static_cast<std::size_t>(kind)];
+    ++time_base_total_;
+    return;
+  }
+  if (lcm_) track_gnss(m);
+  if (kind == MeasurementKind::kGnssPosition) num_sats_ = std::get<GnssPosition>(m).num_sats;
+  engine_->process(m);
+  if (kind == MeasurementKind::kImu) after_imu(item);
+}
+
+void NavProcess::after_imu(const ArrivedMeasurement& item) {
+  ++imu_samples_;
+  if (lcm_) lcm_->post_imu(std::get<ImuSample>(item.measurement));
+  if (engine_->imu_epoch() == last_epoch_) return;  // the filter did not advance (rejected sample)
+  last_epoch_ = engine_->imu_epoch();
+  epoch_.solution = engine_->solution();
+  epoch_.pose_due = rate_.due(epoch_.solution.header.time_ns);
+  epoch_.gnss_fused_total = engine_->stats().of(MeasurementKind::kGnssPosition).used;
+  epoch_.num_sats = num_sats_;
+  for (auto& out : outputs_) out->post(epoch_);
+  if (lcm_ && epoch_.pose_due) lcm_->post_pose(epoch_.solution, item.arrival_ns);
+}
+
+void NavProcess::track_gnss(const Measurement& m) {
+  if (const auto* p = std::get_if<GnssPosition>(&m)) {
+    if (fix_pending_) lcm_->post_gnss(pending_fix_, nullptr);  // its velocity never came
+    pending_fix_ = *p;
+    fix_pending_ = true;
+  } else if (const auto* v = std::get_if<GnssVelocity>(&m)) {
+    if (fix_pending_ && v->receiver_id == pending_fix_.receiver_id &&
+        std::llabs(v->header.time_ns - pending_fix_.header.time_ns) < kSameEpochNs) {
+      lcm_->post_gnss(pending_fix_, v);
+      fix_pending_ = false;
+    }
+  }
+}
+
+void NavProcess::apply_actions() {
+  EngineAction a;
+  while (actions_.try_pop(a)) {
+    switch (a.kind) {
+      case EngineAction::Kind::kReset:
+        engine_->reset(a.reset_mask);
+        log_event("filter reset by command (mask " + std::to_string(a.reset_mask) + ")");
+        break;
+      case EngineAction::Kind::kGnssLeverArm: engine_->set_gnss_lever_arm(a.vector, a.antenna); break;
+      case EngineAction::Kind::kMounting: engine_->set_mounting(a.vector); break;
+      case EngineAction::Kind::kWheelLeverArm: engine_->set_wheel_lever_arm(a.vector); break;
+    }
+  }
+}
+
+void NavProcess::report_status() {
+  const std::int64_t now = monotonic_ns();
+  next_status_ns_ = now + static_cast<std::int64_t>(options_.status_interval_s * 1e9);
+  if (!lcm_) return;
+  std::uint64_t queue_full = 0;
+  for (std::size_t i = 0; i < inputs_.size(); ++i) {
+    snapshots_[i].counters = inputs_[i]->counters();
+    queue_full += snapshots_[i].counters.dropped;
+  }
+  queue_full += lcm_->aiding_dropped();
+  std::uint64_t output_drops = lcm_->dropped();
+  for (const auto& out : outputs_) output_drops += out->drops();
+  const StatusInputs in{engine_->solution(), engine_->stats(), snapshots_, queue_full, time_base_total_,
+                        output_drops, latency_.take_window()};
+  lcm_->post_status(status_.make(in, now));
+}
+
+Summary NavProcess::summary() const {
+  Summary s;
+  for (const auto& in : inputs_) {
+    const InputCounters c = in->counters();
+    InputSummary is;
+    is.path = in->name();
+    is.format = std::string(in->format());
+    is.counters.bytes = c.bytes;
+    is.counters.frames = c.frames;
+    is.counters.bad_frames = c.bad_frames;
+    s.inputs.push_back(std::move(is));
+  }
+  const filter::FilterStats& stats = engine_->stats();
+  for (std::size_t k = 0; k < s.kinds.size(); ++k) {
+    KindSummary& ks = s.kinds[k];
+    const filter::KindStats& fs = stats.kinds[k];
+    ks.decoded = decoded_[k];
+    ks.used = fs.used;
+    for (std::size_t r = 0; r < fs.rejected.size(); ++r) {
+      if (fs.rejected[r] > 0) ks.rejected[std::string(filter::to_string(static_cast<filter::RejectReason>(r)))] = fs.rejected[r];
+    }
+    if (fs.ignored > 0) ks.rejected["ignored"] = fs.ignored;
+    if (time_base_[k] > 0) ks.rejected["time_base"] = time_base_[k];
+  }
+  RunStats run;
+  const std::int64_t end_ns = stopped_ns_ > 0 ? stopped_ns_ : monotonic_ns();
+  run.wall_s = started_ns_ > 0 ? static_cast<double>(end_ns - started_ns_) * 1e-9 : 0.0;
+  run.imu_samples_per_s = run.wall_s > 0 ? static_cast<double>(imu_samples_) / run.wall_s : 0.0;
+  for (NavMode mode : engine_->modes_reached()) run.modes_reached.emplace_back(to_string(mode));
+  s.run = run;
+  return s;
+}
+
+}  // namespace navfuse::apps

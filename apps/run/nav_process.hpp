@@ -1,0 +1,100 @@
+// The companion-computer nav process behind `navfuse run` (DESIGN.md use 1). Threads:
+//
+//   input readers (one per --in) --measurements--> [bounded queue] --> filter thread
+//   LCM thread (NAVFUSE_AID_*)   --aiding-------->        ^               |
+//   output threads (MIP 0x13)    --aiding-------->--------'               |
+//   output threads (FE/MIP commands) --engine actions--> filter thread    |
+//   filter thread --epochs--> output threads (--fe-out, --mip-out, each its own link)
+//   filter thread --poses, IMU, GNSS, status--> LCM thread (NAVFUSE_POSE/IMU/GNSS/STATUS)
+//
+// Only the filter thread touches the engine. Every arrow into a consumer that may be slow is a
+// bounded queue that drops (and counts) rather than waits, so nothing downstream can stall the
+// filter, and nothing is allocated per IMU sample on the way through.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <thread>
+#include <vector>
+
+#include "apps/common/summary.hpp"
+#include "apps/output/output_rate.hpp"
+#include "apps/replay/time_base_gate.hpp"
+#include "apps/run/arrived_measurement.hpp"
+#include "apps/run/engine_action.hpp"
+#include "apps/run/input_reader.hpp"
+#include "apps/run/latency_tracker.hpp"
+#include "apps/run/lcm_service.hpp"
+#include "apps/run/output_epoch.hpp"
+#include "apps/run/output_sink.hpp"
+#include "apps/run/run_options.hpp"
+#include "apps/run/status_reporter.hpp"
+#include "core/config/config.hpp"
+#include "filter/engine.hpp"
+
+namespace navfuse::apps {
+
+class NavProcess {
+ public:
+  // Loads the configuration and opens every input, output and LCM, so that any bad argument
+  // (unknown format, bad URI, missing file or device, bad config key) is a one-line
+  // CommandError before a thread starts.
+  explicit NavProcess(const RunOptions& options);
+  ~NavProcess();
+  NavProcess(const NavProcess&) = delete;
+  NavProcess& operator=(const NavProcess&) = delete;
+
+  void start();
+  // True once every input has ended (files read to the end) and the filter has used it all.
+  bool finished() const { return finished_.load(std::memory_order_acquire); }
+  // Orderly shutdown: inputs stop, the filter fuses what is queued, outputs and LCM flush.
+  void stop();
+  // Inputs, measurements decoded / used / rejected and run statistics (complete after stop()).
+  Summary summary() const;
+
+ private:
+  void filter_loop();
+  void process(const ArrivedMeasurement& item);
+  void after_imu(const ArrivedMeasurement& item);
+  void track_gnss(const Measurement& m);
+  void apply_actions();
+  void report_status();
+  bool inputs_ended() const;
+
+  RunOptions options_;
+  config::Config config_;
+  std::unique_ptr<filter::Engine> engine_;
+  MeasurementQueue queue_;
+  EngineActionQueue actions_;
+  LatencyTracker latency_;
+  std::vector<std::unique_ptr<InputReader>> inputs_;
+  std::vector<std::unique_ptr<OutputSink>> outputs_;
+  std::unique_ptr<LcmService> lcm_;
+
+  // Filter thread state.
+  TimeBaseGate gate_;
+  OutputRate rate_;
+  StatusReporter status_;
+  ArrivedMeasurement item_;
+  OutputEpoch epoch_;
+  std::vector<InputSnapshot> snapshots_;
+  std::uint64_t last_epoch_ = 0;
+  std::uint8_t num_sats_ = 0;
+  GnssPosition pending_fix_;  // waiting for the velocity of the same epoch (NAVFUSE_GNSS)
+  bool fix_pending_ = false;
+  std::int64_t next_status_ns_ = 0;
+  std::array<std::uint64_t, static_cast<std::size_t>(MeasurementKind::kCount)> decoded_{};
+  std::array<std::uint64_t, static_cast<std::size_t>(MeasurementKind::kCount)> time_base_{};
+  std::uint64_t time_base_total_ = 0;
+  std::uint64_t imu_samples_ = 0;
+  std::int64_t started_ns_ = 0;
+  std::int64_t stopped_ns_ = 0;
+
+  std::thread filter_thread_;
+  std::atomic<bool> stop_filter_{false};
+  std::atomic<bool> finished_{false};
+  bool stopped_ = false;
+};
+
+}  // namespace navfuse::apps

@@ -1,0 +1,110 @@
+// A FusionEngine client of the nav process's --fe-out tcp-listen link, as software written for a
+// Point One device would be: it reads and frames the stream on its own thread (a client that
+// stops reading would be cut off as too slow) and sends commands.
+#pragma once
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "core/io/unique_fd.hpp"
+#include "frontends/fusionengine/framer.hpp"
+#include "frontends/fusionengine/messages_control.hpp"
+#include "frontends/fusionengine/messages_solution.hpp"
+#include "frontends/fusionengine/payload_reader.hpp"
+#include "frontends/fusionengine/writer.hpp"
+
+namespace navfuse::test {
+
+class FeClient {
+ public:
+  struct Received {
+    std::vector<std::int64_t> pose_times_ns;  // p1_time of every Pose, in arrival order
+    std::vector<fe::CommandResponseMessage> responses;
+    std::uint64_t frames = 0;
+  };
+
+  // Connects to 127.0.0.1:port, retrying up to timeout_ms while the listener comes up.
+  bool connect(std::uint16_t port, int timeout_ms) {
+    const io::Deadline deadline(timeout_ms);
+    while (!deadline.expired()) {
+      io::UniqueFd fd(::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0));
+      sockaddr_in a{};
+      a.sin_family = AF_INET;
+      a.sin_port = htons(port);
+      a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+      if (::connect(fd.get(), reinterpret_cast<const sockaddr*>(&a), sizeof a) == 0) {
+        fd_ = std::move(fd);
+        reader_ = std::thread([this] { read_loop(); });
+        return true;
+      }
+      ::poll(nullptr, 0, 20);
+    }
+    return false;
+  }
+  ~FeClient() {
+    stop_ = true;
+    if (reader_.joinable()) reader_.join();
+  }
+
+  template <class M>
+  std::uint32_t send(M msg) {
+    std::vector<std::uint8_t> bytes;
+    const std::uint32_t sequence = writer_.next_sequence();
+    writer_.append(std::move(msg), bytes);
+    ::send(fd_.get(), bytes.data(), bytes.size(), MSG_NOSIGNAL);
+    return sequence;
+  }
+
+  Received snapshot() {
+    std::lock_guard lock(mutex_);
+    return received_;
+  }
+  bool closed() const { return closed_; }
+
+ private:
+  void read_loop() {
+    std::vector<std::uint8_t> buf(65536);
+    while (!stop_) {
+      pollfd p{fd_.get(), POLLIN, 0};
+      if (::poll(&p, 1, 50) <= 0) continue;
+      const ssize_t n = ::recv(fd_.get(), buf.data(), buf.size(), 0);
+      if (n <= 0) {
+        closed_ = true;
+        return;
+      }
+      std::lock_guard lock(mutex_);
+      framer_.feed(std::span<const std::uint8_t>(buf.data(), static_cast<std::size_t>(n)), [&](const fe::Frame& f) {
+        ++received_.frames;
+        fe::PayloadReader r(f.payload);
+        if (f.header.message_type == fe::to_u16(fe::MessageType::kPose)) {
+          fe::PoseMessage m;
+          m.visit(r);
+          if (r.ok()) received_.pose_times_ns.push_back(m.p1_time.ns());
+        } else if (f.header.message_type == fe::to_u16(fe::MessageType::kCommandResponse)) {
+          fe::CommandResponseMessage m;
+          m.visit(r);
+          if (r.ok()) received_.responses.push_back(m);
+        }
+      });
+    }
+  }
+
+  io::UniqueFd fd_;
+  fe::FusionEngineWriter writer_;
+  fe::Framer framer_;
+  std::mutex mutex_;
+  Received received_;
+  std::thread reader_;
+  std::atomic<bool> stop_{false};
+  std::atomic<bool> closed_{false};
+};
+
+}  // namespace navfuse::test
