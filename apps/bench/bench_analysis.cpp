@@ -80,7 +80,10 @@ BenchAnalysis analyse(const BenchLog& log, const AnalysisOptions& options) {
     throw CommandError("empty overlap: navfuse reached no navigation solution in the log (modes reached:" + modes +
                        "), so there is nothing to compare");
   }
-  const View device = log.device.with_any();
+  // A device still initialising may flag fields valid that hold no solution yet (zeros): only
+  // samples from a mode with an estimate are compared.
+  View device = log.device.with_any();
+  std::erase_if(device, [](const TrackSample* s) { return s->mode <= NavMode::kInitializing; });
   const bool with_device = !log.device.empty();
   if (with_device) {
     a.device_timing = solution_timing(log.device, log.start_ns);

@@ -1,0 +1,44 @@
+// `navfuse bench`: navfuse against the device's own solution in the same log (and both against
+// truth when given), with metrics.json, time-series CSVs and report.html in the report folder.
+// The command line (bench_command.hpp) is a thin layer over run_bench(), which tests call
+// in-process.
+//
+// Flow: collect (bench_log.hpp: the log through the filter as replay runs it, plus the device's
+// solutions and GNSS fix times) -> analyse (bench_analysis.hpp: alignment, errors, statistics,
+// phases, start-up timing) -> write metrics.json and CSVs -> render report.html (report.py) ->
+// check the --fail-above bounds.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "apps/bench/fail_threshold.hpp"
+
+namespace navfuse::apps::bench {
+
+struct BenchOptions {
+  std::vector<std::string> inputs;
+  std::string config_path;
+  std::string truth_path;
+  std::string report_dir;
+  std::vector<FailThreshold> fail_above;
+  std::optional<double> max_gap_s;
+  bool allow_truncated = false;
+  bool html = true;       // false: metrics.json and CSVs only (no Python needed)
+  bool progress = false;  // progress of long logs on stderr
+};
+
+struct BenchResult {
+  std::vector<std::string> exceeded;  // --fail-above bounds that were exceeded
+  std::vector<std::string> notes;
+  std::string summary_text;           // the summary table printed by the command
+};
+
+// Throws CommandError with a one-line reason on bad input (see collect_bench_log, analyse).
+BenchResult run_bench(const BenchOptions& options);
+
+// Exit status when a --fail-above bound is exceeded (1 is any error).
+inline constexpr int kExitThresholdExceeded = 3;
+
+}  // namespace navfuse::apps::bench

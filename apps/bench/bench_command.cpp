@@ -1,0 +1,47 @@
+#include "apps/bench/bench_command.hpp"
+
+#include <iostream>
+#include <memory>
+
+#include "apps/bench/bench.hpp"
+
+namespace navfuse::apps {
+
+void add_bench_command(CLI::App& root, int& exit_code) {
+  struct Args {
+    bench::BenchOptions options;
+    std::vector<std::string> fail_above;
+    bool quiet = false;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = root.add_subcommand(
+      "bench", "Compare navfuse with the device's own solution in the same log (and both with truth)");
+  cmd->add_option("inputs", args->options.inputs, "[FORMAT:]PATH of each log (fe, mip, vn, unicore)")->required();
+  cmd->add_option("--config", args->options.config_path, "YAML configuration (default: the device's profile)");
+  cmd->add_option("--truth", args->options.truth_path, "truth CSV (navfuse sim --truth) to compare both with");
+  cmd->add_option("--report", args->options.report_dir, "folder for report.html, metrics.json and CSVs")->required();
+  cmd->add_option("--fail-above", args->fail_above,
+                  "METRIC=VALUE: exit 3 when a metrics.json value exceeds VALUE (repeatable), e.g. "
+                  "navfuse_vs_truth.horizontal_m.rms=0.5");
+  cmd->add_option("--max-gap", args->options.max_gap_s,
+                  "longest interval (s) interpolated across (default: 3 median sample intervals)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--no-html", [args](std::int64_t) { args->options.html = false; },
+                "write metrics.json and CSVs only (no Python needed)");
+  cmd->add_flag("--allow-truncated", args->options.allow_truncated, "accept a log whose last frame is cut off");
+  cmd->add_flag("--quiet", args->quiet, "print only errors");
+  cmd->callback([args, &exit_code] {
+    for (const auto& a : args->fail_above) args->options.fail_above.push_back(bench::parse_fail_threshold(a));
+    args->options.progress = !args->quiet;
+    const bench::BenchResult result = bench::run_bench(args->options);
+    if (!args->quiet) {
+      for (const auto& note : result.notes) std::cerr << "navfuse bench: " << note << "\n";
+      std::cout << result.summary_text << "report: " << args->options.report_dir << "/"
+                << (args->options.html ? "report.html" : "metrics.json") << "\n";
+    }
+    for (const auto& line : result.exceeded) std::cerr << "navfuse bench: bound exceeded: " << line << "\n";
+    exit_code = result.exceeded.empty() ? 0 : bench::kExitThresholdExceeded;
+  });
+}
+
+}  // namespace navfuse::apps
