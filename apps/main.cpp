@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/aid/aid_command.hpp"
+#include "apps/bench/bench_command.hpp"
 #include "apps/common/command_error.hpp"
 #include "apps/decode/decode_command.hpp"
 #include "apps/replay/replay_command.hpp"
@@ -18,9 +19,10 @@ int main(int argc, char** argv) {
   int exit_code = 0;
   navfuse::apps::add_decode_command(app, exit_code);
   navfuse::apps::add_replay_command(app, exit_code);
-  navfuse::apps::add_sim_command(app, exit_code);
+  navfuse::apps::add_bench_command(app, exit_code);
   navfuse::apps::add_aid_command(app, exit_code);
   navfuse::apps::add_run_command(app, exit_code);
+  navfuse::apps::add_sim_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
