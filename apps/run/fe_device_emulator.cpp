@@ -201,6 +201,17 @@ void FeDeviceEmulator::handle(const fe::Frame& frame, std::vector<std::uint8_t>&
       if (mask != 0) effects.actions.push_back(EngineAction::reset(mask));
       return answer(fe::Response::kOk);
     }
+    case MessageType::kSetConfig:
+    case MessageType::kGetConfig:
+    case MessageType::kSaveConfig:
+    case MessageType::kShutdownRequest:
+    case MessageType::kStartupRequest:
+    case MessageType::kFaultControl:
+    case MessageType::kImportData:
+    case MessageType::kExportData:
+      // Commands a device answers but this link does not implement: say so rather than leave
+      // the client waiting for a response that never comes.
+      return answer(fe::Response::kUnsupportedFeature);
     default:
       return;  // not a command: a client's own stream (e.g. echoed output) is not answered
   }
