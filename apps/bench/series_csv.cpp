@@ -77,8 +77,10 @@ void write_track(const std::string& path, const std::vector<TrackSample>& sample
        "std_yaw_deg,gnss_outage,stationary\n";
   constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
   for (const TrackSample& s : samples) {
-    const bool pos = has(s, Quantity::kPosition), vel = has(s, Quantity::kVelocity);
-    const bool att = has(s, Quantity::kAttitude), hdg = has(s, Quantity::kHeading);
+    // Before a solution has an estimate its fields are placeholders (zeros), even if flagged.
+    const bool estimating = s.mode > NavMode::kInitializing;
+    const bool pos = estimating && has(s, Quantity::kPosition), vel = estimating && has(s, Quantity::kVelocity);
+    const bool att = estimating && has(s, Quantity::kAttitude), hdg = estimating && has(s, Quantity::kHeading);
     Eigen::Vector3d ned = Eigen::Vector3d::Constant(kNan);
     if (pos && origin.set) ned = geo::ned_offset_m(origin.llh, {s.lat_rad, s.lon_rad, s.height_m});
     const auto pick = [](bool ok, double v) { return ok ? v : kNan; };
