@@ -169,6 +169,7 @@ struct DelayModelConfig {
 template <class C>
 std::vector<std::uint8_t> pack_config(C value) {
   std::vector<std::uint8_t> out;
+  out.reserve(C::kSize);
   PayloadWriter w(out);
   value.visit(w);
   return out;
