@@ -20,10 +20,10 @@ using testing::read_bytes;
 
 class ReplayScenario : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    dir_ = std::filesystem::path(::testing::TempDir()) / "navfuse_apps" / "ReplayScenario";
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
+  // Each test simulates its own logs in its own directory: ctest runs the tests of this file as
+  // separate processes in parallel, so nothing may be shared between them.
+  void SetUp() override {
+    dir_ = testing::scratch_dir();
     SimOptions o;
     o.scenario = "drive_short";  // 30 s GNSS outage at 20 m/s, 95-125 s
     o.format = "vn";
@@ -33,7 +33,7 @@ class ReplayScenario : public ::testing::Test {
     o.device_rate_hz = 50.0;
     run_sim(o);
   }
-  static ReplayOptions options(const std::string& tag) {
+  ReplayOptions options(const std::string& tag) {
     ReplayOptions r;
     r.config_path = std::string(NAVFUSE_SOURCE_DIR) + "/data/demo/vn300.yaml";  // the simulated vehicle
     r.inputs = {(dir_ / "vn.bin").string(), (dir_ / "wheel.p1log").string()};
@@ -43,7 +43,7 @@ class ReplayScenario : public ::testing::Test {
     r.csv_out = (dir_ / (tag + ".csv")).string();
     return r;
   }
-  static inline std::filesystem::path dir_;
+  std::filesystem::path dir_;
 };
 
 TEST_F(ReplayScenario, NavigatesWithinTheFilterGoalsAgainstTruth) {
