@@ -26,7 +26,8 @@ class LcmPublisher {
   // `c_vs`: the configured sensor -> vehicle mounting, for NAVFUSE_IMU (vehicle frame).
   explicit LcmPublisher(lcm::LCM& lcm, const Eigen::Matrix3d& c_vs = Eigen::Matrix3d::Identity());
 
-  // Each returns false when LCM refused the message (counted in failures()).
+  // Each returns false when nothing was published: LCM refused the message (counted in
+  // failures()), or, for publish_imu, increments without an interval cannot be given as rates.
   bool publish_pose(const NavSolution& s);
   bool publish_imu(const ImuSample& s);
   bool publish_gnss(const GnssPosition& p, const GnssVelocity* v);
