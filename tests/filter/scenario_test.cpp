@@ -223,3 +223,29 @@ TEST(FilterScenario, MonteCarloNeesConsistency) {
 
 }  // namespace
 }  // namespace navfuse::filter
+
+namespace navfuse::filter {
+namespace {
+
+TEST(FilterScenario, DualAntennaHeadingBeforeMoving) {
+  // 1.5 m baseline, 0.2 deg heading noise: the heading is known while still standing, so the
+  // filter reaches AHRS / full navigation before the vehicle moves, and stays aligned.
+  const sim::Scenario s = sim::make_scenario("dual_antenna");
+  double heading_err_static = 1.0;
+  test::Rms heading;
+  const auto summary = test::run_scenario(s, test::options_for(s), [&](const test::Epoch& e) {
+    if (e.t_s <= 29.0) heading_err_static = e.rpy_err_rad.z();
+    if (e.t_s > 60.0) heading.add(e.rpy_err_rad.z());
+  });
+  std::printf("dual antenna: navigation at %.2f s (moves at %.2f s), static heading error %.3f deg, "
+              "heading RMS after 60 s %.4f deg\n", summary.first_navigation_s, summary.first_speed_2mps_s,
+              heading_err_static * rot::kRadToDeg, heading.value() * rot::kRadToDeg);
+  EXPECT_GT(summary.first_navigation_s, 0.0);
+  EXPECT_LT(summary.first_navigation_s, 30.0);
+  EXPECT_LT(std::abs(heading_err_static) * rot::kRadToDeg, 0.3);
+  EXPECT_LT(heading.value() * rot::kRadToDeg, 0.1);
+  EXPECT_GT(summary.stats.of(MeasurementKind::kGnssHeading).used, 500u);
+}
+
+}  // namespace
+}  // namespace navfuse::filter
