@@ -78,6 +78,9 @@ class PayloadReader {
 // Decodes `payload` into `msg` (any catalogue struct). False when the payload is shorter than
 // the layout needs; longer payloads (newer message versions) decode their known prefix, as
 // spec §2.3 L189 allows ("safe to interpret a newer version using an older message definition").
+// The header's message version is never a reason to reject: the spec's versions differ from the
+// public client's for several messages (digest §13 A15); message_versions.hpp handles the few
+// older layouts that matter.
 template <class M>
 bool decode_payload(std::span<const std::uint8_t> payload, M& msg) {
   PayloadReader r(payload);
