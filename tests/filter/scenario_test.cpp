@@ -249,3 +249,37 @@ TEST(FilterScenario, DualAntennaHeadingBeforeMoving) {
 
 }  // namespace
 }  // namespace navfuse::filter
+
+namespace navfuse::filter {
+namespace {
+
+TEST(FilterScenario, OptionalStatesCalibrate) {
+  // Every optional state on (odometer scale, mounting pitch/yaw, GNSS lever arm, gyro and accel
+  // scale factors), the lever arm configured 0.2 / -0.2 / 0.1 m wrong, RTK drive: the horizontal
+  // lever arm and the 0.5 % odometer scale error are learned. (The vertical lever arm is nearly
+  // unobservable for a car that stays level: not asserted.)
+  const sim::Scenario s = sim::make_scenario("rtk_drive");
+  FilterOptions o = test::options_for(s);
+  o.states.mounting = o.states.gnss_lever_arm = o.states.gyro_scale = o.states.accel_scale = true;
+  o.gnss_lever_arm_m += Eigen::Vector3d(0.2, -0.2, 0.1);
+  o.initial_lever_arm_std_m = 0.3;
+  test::Rms horizontal;
+  NavState final_state;
+  test::run_scenario(s, o, [&](const test::Epoch& e) {
+    if (e.t_s > 120.0) horizontal.add(e.horizontal_m());
+    final_state = e.engine->core().x;
+  });
+  const Eigen::Vector3d lever_err = final_state.gnss_lever_arm_m - s.gnss.lever_arm_m;
+  std::printf("optional states: horizontal RMS %.4f m, lever arm error %.3f %.3f %.3f m, odometer "
+              "scale %.5f (true %.5f), mounting pitch/yaw %.4f / %.4f deg\n",
+              horizontal.value(), lever_err.x(), lever_err.y(), lever_err.z(), final_state.wheel_scale,
+              s.wheel.scale_error, final_state.mount_pitch_rad * kDeg, final_state.mount_yaw_rad * kDeg);
+  EXPECT_LT(lever_err.head<2>().norm(), 0.03);
+  EXPECT_NEAR(final_state.wheel_scale, s.wheel.scale_error, 2e-4);
+  EXPECT_LT(std::abs(final_state.mount_pitch_rad) * kDeg, 0.05);
+  EXPECT_LT(std::abs(final_state.mount_yaw_rad) * kDeg, 0.05);
+  EXPECT_LT(horizontal.value(), 0.05);
+}
+
+}  // namespace
+}  // namespace navfuse::filter
