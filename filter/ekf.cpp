@@ -39,43 +39,61 @@ double Ekf::nis(const Observation& obs) const {
   return obs.residual.dot(llt.solve(obs.residual));
 }
 
-UpdateResult Ekf::update(const Observation& obs, double gate) {
-  UpdateResult result;
-  const int m = obs.rows();
-  if (m == 0) return result;
-  const auto hn = obs.h.leftCols(n);
-  auto pn = p.topLeftCorner(n, n);
+namespace {
 
-  // P H^T (n x m) and S = H P H^T + R (m x m).
-  const GainMatrix pht = pn * hn.transpose();
+// The gated Joseph update on the leading N x N block. N is a compile-time constant (one of the
+// possible active dimensions) so that every product below has fixed row counts and small inner
+// dimensions m <= 3, which Eigen evaluates coefficient-wise instead of through GEMM kernels.
+template <int N>
+void joseph_update(Covariance& p, const Observation& obs, double gate, UpdateResult& result) {
+  using Gain = Eigen::Matrix<double, N, Eigen::Dynamic, 0, N, Observation::kMaxRows>;
+  using Block = Eigen::Matrix<double, N, N>;
+  const auto h = obs.h.template leftCols<N>();
+  const Block pn = p.template topLeftCorner<N, N>();
+
+  // P H^T (N x m) and S = H P H^T + R (m x m).
+  const Gain pht = pn.lazyProduct(h.transpose());
   Observation::Noise s = obs.r;
-  s.noalias() += hn * pht;
+  s.noalias() += h.lazyProduct(pht);
   Eigen::LLT<Observation::Noise> llt(s);
   if (llt.info() != Eigen::Success) {
     result.singular = true;
-    return result;
+    return;
   }
   result.nis = obs.residual.dot(llt.solve(obs.residual));
-  if (gate > 0.0 && !(result.nis <= gate)) return result;
+  if (gate > 0.0 && !(result.nis <= gate)) return;
 
   // K = P H^T S^-1, as (S^-1 H P)^T since S is symmetric.
-  const GainMatrix k = llt.solve(pht.transpose()).transpose();
-  result.dx.head(n) = k * obs.residual;
+  const Gain k = llt.solve(pht.transpose()).transpose();
+  result.dx.template head<N>() = k * obs.residual;
 
   // Joseph form through rank-m factors:
   //   M = (I - K H) P = P - K (H P)
   //   M (I - K H)^T = M - (M H^T) K^T
   //   P' = M (I - K H)^T + K R K^T
-  Covariance mm;
-  auto mn = mm.topLeftCorner(n, n);
-  mn = pn;
-  mn.noalias() -= k * pht.transpose();
-  const GainMatrix mht = mn * hn.transpose();
-  mn.noalias() -= mht * k.transpose();
-  const GainMatrix kr = k * obs.r;
-  mn.noalias() += kr * k.transpose();
-  pn = 0.5 * (mn + mn.transpose());
+  Block mm = pn;
+  mm.noalias() -= k.lazyProduct(pht.transpose());
+  const Gain mht = mm.lazyProduct(h.transpose());
+  mm.noalias() -= mht.lazyProduct(k.transpose());
+  const Gain kr = k.lazyProduct(obs.r);
+  mm.noalias() += kr.lazyProduct(k.transpose());
+  p.template topLeftCorner<N, N>() = 0.5 * (mm + mm.transpose());
   result.accepted = true;
+}
+
+}  // namespace
+
+UpdateResult Ekf::update(const Observation& obs, double gate) {
+  UpdateResult result;
+  if (obs.rows() == 0) return result;
+  switch (n) {  // the possible active dimensions (StateSelection::active_dimension)
+    case sx::kCoreCount: joseph_update<sx::kCoreCount>(p, obs, gate, result); break;
+    case sx::kWheelScale + 1: joseph_update<sx::kWheelScale + 1>(p, obs, gate, result); break;
+    case sx::kMountYaw + 1: joseph_update<sx::kMountYaw + 1>(p, obs, gate, result); break;
+    case sx::kLeverArm + 3: joseph_update<sx::kLeverArm + 3>(p, obs, gate, result); break;
+    case sx::kGyroScale + 3: joseph_update<sx::kGyroScale + 3>(p, obs, gate, result); break;
+    default: joseph_update<sx::kCount>(p, obs, gate, result); break;
+  }
   return result;
 }
 

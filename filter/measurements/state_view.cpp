@@ -48,7 +48,7 @@ BodyVelocityModel body_velocity_at(const StateView& s, const Eigen::Vector3d& l,
   const Eigen::Vector3d alpha(0.0, s.x.mount_pitch_rad, s.x.mount_yaw_rad);
   const Eigen::Matrix3d r_m = Eigen::Matrix3d::Identity() - rot::skew(alpha);
   m.vel_mps = r_m * v_b;
-  m.jacobian = r_m * j;
+  m.jacobian.noalias() = r_m.lazyProduct(j);
   // R_m_hat v - R_m v = -(d alpha x v) = [v x] d alpha.
   const Eigen::Matrix3d d_alpha = rot::skew(v_b);
   m.jacobian.col(sx::kMountPitch) = d_alpha.col(1);
