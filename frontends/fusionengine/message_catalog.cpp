@@ -24,24 +24,23 @@ constexpr bool kFixedLayout = !requires(M m) { m.sync_lengths(); } &&
 
 // Bound per type id (0: no bound beyond kMaxPayloadSize); a table so the framer's check is one
 // load per frame.
-struct SizeBounds {
-  std::array<std::uint16_t, 65536> bound{};
-  constexpr SizeBounds() { fill(std::make_index_sequence<kCatalogSize>{}); }
-  template <std::size_t... I>
-  constexpr void fill(std::index_sequence<I...>) {
-    ((bound[to_u16(std::tuple_element_t<I, AllMessages>::kType)] =
-          kFixedLayout<std::tuple_element_t<I, AllMessages>>
-              ? static_cast<std::uint16_t>(std::tuple_element_t<I, AllMessages>::kSize + kMaxVersionGrowth)
-              : std::uint16_t{0}),
-     ...);
-  }
-};
-constexpr SizeBounds kSizeBounds{};
+using SizeBounds = std::array<std::uint16_t, 65536>;
+template <std::size_t... I>
+constexpr SizeBounds make_size_bounds(std::index_sequence<I...>) {
+  SizeBounds bound{};
+  ((bound[to_u16(std::tuple_element_t<I, AllMessages>::kType)] =
+        kFixedLayout<std::tuple_element_t<I, AllMessages>>
+            ? static_cast<std::uint16_t>(std::tuple_element_t<I, AllMessages>::kSize + kMaxVersionGrowth)
+            : std::uint16_t{0}),
+   ...);
+  return bound;
+}
+constexpr SizeBounds kSizeBounds = make_size_bounds(std::make_index_sequence<kCatalogSize>{});
 
 }  // namespace
 
 std::uint32_t max_payload_size(std::uint16_t message_type) {
-  const std::uint16_t b = kSizeBounds.bound[message_type];
+  const std::uint16_t b = kSizeBounds[message_type];
   return b == 0 ? kMaxPayloadSize : b;
 }
 
