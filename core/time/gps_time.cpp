@@ -1,6 +1,7 @@
 #include "core/time/gps_time.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace navfuse::time {
 namespace {
@@ -46,10 +47,21 @@ constexpr void civil_from_days(std::int64_t z, int& y, int& m, int& d) {
 }  // namespace
 
 std::int64_t gps_ns_from_week_tow_ns(std::int32_t week, std::int64_t tow_ns) {
-  return static_cast<std::int64_t>(week) * kNsPerWeek + tow_ns;
+  // Decoders pass whatever a corrupted frame holds: saturate instead of overflowing (UB).
+  constexpr std::int64_t kMin = std::numeric_limits<std::int64_t>::min();
+  constexpr std::int64_t kMax = std::numeric_limits<std::int64_t>::max();
+  std::int64_t week_ns = 0, sum = 0;
+  if (__builtin_mul_overflow(static_cast<std::int64_t>(week), kNsPerWeek, &week_ns)) return week < 0 ? kMin : kMax;
+  if (__builtin_add_overflow(week_ns, tow_ns, &sum)) return tow_ns < 0 ? kMin : kMax;
+  return sum;
 }
 
 std::int64_t gps_ns_from_week_tow(std::int32_t week, double tow_s) {
+  // int64 ns spans +-292 years: a TOW outside that (or NaN) saturates, never overflows.
+  constexpr double kMaxTowS = 9.0e9;
+  if (!(std::abs(tow_s) < kMaxTowS)) {
+    return tow_s < 0 ? std::numeric_limits<std::int64_t>::min() : std::numeric_limits<std::int64_t>::max();
+  }
   // Split the TOW into whole seconds and a fraction so that the nanoseconds are exact to the
   // double's resolution of the fraction, not of the (up to 6e5) whole value.
   const double whole = std::floor(tow_s);

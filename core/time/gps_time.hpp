@@ -22,7 +22,9 @@ struct WeekTow {
 };
 
 // Week + time of week -> ns. TOW outside [0, 604800) is normalised into the week (a receiver that
-// reports TOW 604800.0 at the week boundary means week+1, TOW 0).
+// reports TOW 604800.0 at the week boundary means week+1, TOW 0). Values beyond int64 ns (about
+// +-292 years, or a NaN TOW from a corrupted frame) saturate to the int64 limits rather than
+// overflow; decoders reject such times.
 std::int64_t gps_ns_from_week_tow(std::int32_t week, double tow_s);
 std::int64_t gps_ns_from_week_tow_ns(std::int32_t week, std::int64_t tow_ns);
 WeekTow week_tow_from_gps_ns(std::int64_t gps_ns);

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 namespace navfuse::time {
 namespace {
 
@@ -78,6 +81,18 @@ TEST(GpsTime, TowWrapsIntoTheNextWeek) {
   EXPECT_DOUBLE_EQ(back.tow_s, 604799.5);
   // Sub-microsecond TOW survives (the fraction is converted separately from the whole seconds).
   EXPECT_EQ(gps_ns_from_week_tow(2200, 345600.000000123) - gps_ns_from_week_tow_ns(2200, 345600 * kS), 123);
+}
+
+TEST(GpsTime, AbsurdWeekOrTowSaturatesInsteadOfOverflowing) {
+  // Found by the Unicore fuzzer: a corrupted TOW of 4.6e10 s overflowed int64 ns (UB).
+  constexpr auto kMax = std::numeric_limits<std::int64_t>::max();
+  constexpr auto kMin = std::numeric_limits<std::int64_t>::min();
+  EXPECT_EQ(gps_ns_from_week_tow(2300, 46081800000.0), kMax);
+  EXPECT_EQ(gps_ns_from_week_tow(2300, -46081800000.0), kMin);
+  EXPECT_EQ(gps_ns_from_week_tow(2300, std::nan("")), kMax);
+  EXPECT_EQ(gps_ns_from_week_tow_ns(2'000'000'000, 0), kMax);
+  EXPECT_EQ(gps_ns_from_week_tow_ns(-2'000'000'000, 0), kMin);
+  EXPECT_EQ(gps_ns_from_week_tow_ns(15000, kMax), kMax);
 }
 
 TEST(GpsTime, CalendarRoundTripOverCenturies) {
