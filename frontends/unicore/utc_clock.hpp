@@ -48,7 +48,13 @@ class UtcClock {
   bool leap_from_device() const { return device_leap_s_.has_value(); }
 
  private:
-  void set_anchor(std::int64_t gps_ns) { anchor_gps_ns_ = gps_ns; }
+  // A corrupt sentence can carry any week or date: only a GPS time between the GPS epoch and
+  // 200 years later becomes the anchor, so resolving against it can never overflow int64 ns
+  // (found by the fuzzer under UBSan).
+  void set_anchor(std::int64_t gps_ns) {
+    constexpr std::int64_t kMaxPlausibleGpsNs = 200LL * 365 * 86400 * 1'000'000'000LL;
+    if (gps_ns >= 0 && gps_ns < kMaxPlausibleGpsNs) anchor_gps_ns_ = gps_ns;
+  }
 
   std::optional<std::int64_t> anchor_gps_ns_;
   std::optional<int> device_leap_s_;
