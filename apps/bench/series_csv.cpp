@@ -77,7 +77,7 @@ void write_track(const std::string& path, const std::vector<TrackSample>& sample
        "std_yaw_deg,gnss_outage,stationary\n";
   constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
   for (const TrackSample& s : samples) {
-    // Before a solution has an estimate its fields are placeholders (zeros), even if flagged.
+    // Before a solution has an estimate its fields are zeros rather than estimates, even if flagged.
     const bool estimating = s.mode > NavMode::kInitializing;
     const bool pos = estimating && has(s, Quantity::kPosition), vel = estimating && has(s, Quantity::kVelocity);
     const bool att = estimating && has(s, Quantity::kAttitude), hdg = estimating && has(s, Quantity::kHeading);

@@ -8,7 +8,7 @@ namespace navfuse::frontends::mip {
 namespace {
 
 using W = WireType;
-constexpr Param kNone[] = {{"", W::kU8}};  // placeholder: span of size 0 is taken below
+constexpr Param kNone[] = {{"", W::kU8}};  // never read: only a span of size 0 is taken of it below
 constexpr Param kFn[] = {{"function", W::kU8}};
 
 // ---- 0x01 base (digest §7.1, L8006-8188)
