@@ -1,6 +1,7 @@
 #include "apps/run/fe_device_emulator.hpp"
 
 #include "apps/output/fe_pose_writer.hpp"
+#include "core/rotation/rotation.hpp"
 #include "filter/engine.hpp"
 #include "frontends/fusionengine/payload_reader.hpp"
 
@@ -55,6 +56,24 @@ std::uint32_t engine_reset_mask(std::uint32_t fe_mask) {
   return mask;
 }
 
+// What a SetConfig (or a revert by SaveConfig) changed, as engine actions. Lever arms and
+// mounting are the settings the engine takes live (filter::Engine::set_gnss_lever_arm,
+// set_mounting); config lever arms are vehicle FRD metres, mounting 3-2-1 degrees.
+void config_changes_to_actions(const config::Config& before, const config::Config& after, CommandEffects& effects) {
+  const auto vec = [](const config::Vec3& v) { return Eigen::Vector3d(v[0], v[1], v[2]); };
+  if (after.gnss.lever_arm_m != before.gnss.lever_arm_m) {
+    effects.actions.push_back(EngineAction::with_vector(EngineAction::Kind::kGnssLeverArm, vec(after.gnss.lever_arm_m), 0));
+  }
+  if (after.gnss.secondary_lever_arm_m != before.gnss.secondary_lever_arm_m) {
+    effects.actions.push_back(
+        EngineAction::with_vector(EngineAction::Kind::kGnssLeverArm, vec(after.gnss.secondary_lever_arm_m), 1));
+  }
+  if (after.imu.mounting_rpy_deg != before.imu.mounting_rpy_deg) {
+    effects.actions.push_back(EngineAction::with_vector(EngineAction::Kind::kMounting,
+                                                        vec(after.imu.mounting_rpy_deg) * rot::kDegToRad));
+  }
+}
+
 }  // namespace
 
 // ---- FeStreamRates ---------------------------------------------------------------------------
@@ -105,7 +124,7 @@ bool FeStreamRates::due(MessageType type, std::int64_t time_ns, bool default_due
 
 // ---- FeDeviceEmulator ------------------------------------------------------------------------
 
-FeDeviceEmulator::FeDeviceEmulator(const config::Config& config) : config_(config) {}
+FeDeviceEmulator::FeDeviceEmulator(const config::Config& config) : config_(config), control_(config) {}
 
 void FeDeviceEmulator::stream(const OutputEpoch& epoch, std::vector<std::uint8_t>& out) {
   last_ = epoch;
@@ -203,7 +222,12 @@ void FeDeviceEmulator::handle(const fe::Frame& frame, std::vector<std::uint8_t>&
     }
     case MessageType::kSetConfig:
     case MessageType::kGetConfig:
-    case MessageType::kSaveConfig:
+    case MessageType::kSaveConfig: {
+      const config::Config before = control_.config();
+      control_.feed(frame.bytes, reply);
+      config_changes_to_actions(before, control_.config(), effects);
+      return;
+    }
     case MessageType::kShutdownRequest:
     case MessageType::kStartupRequest:
     case MessageType::kFaultControl:

@@ -1,7 +1,8 @@
 // --fe-out: navfuse as a Point One FusionEngine device on the link. Streams Pose (10000) and
 // PoseAux (10003) at output.rate_hz, GNSSInfo (10001) at pose times after a GNSS fix was fused,
 // and IMUOutput (11000) after every IMU sample (DESIGN.md --fe-out), each at the rate a client
-// set with SetMessageRate; and answers the device's commands on the same link.
+// set with SetMessageRate; and answers the device's commands on the same link (configuration
+// commands through frontends/fusionengine/device_control).
 #pragma once
 
 #include <array>
@@ -11,6 +12,7 @@
 #include "apps/output/output_rate.hpp"
 #include "apps/run/device_emulator.hpp"
 #include "core/config/config.hpp"
+#include "frontends/fusionengine/device_control.hpp"
 #include "frontends/fusionengine/framer.hpp"
 #include "frontends/fusionengine/messages_control.hpp"
 #include "frontends/fusionengine/writer.hpp"
@@ -53,6 +55,9 @@ class FeDeviceEmulator final : public DeviceEmulator {
   fe::Framer& framer_for(io::PeerId peer);
 
   config::Config config_;
+  // SetConfig / GetConfig / SaveConfig are answered by the front-end's device-compatible
+  // handler; what it changes in the config is handed to the engine as EngineActions.
+  fe::DeviceControl control_;
   FeStreamRates rates_;
   fe::FusionEngineWriter writer_;  // one sequence counter for everything this link sends
   std::map<io::PeerId, std::unique_ptr<fe::Framer>> framers_;
