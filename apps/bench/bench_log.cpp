@@ -1,42 +1,17 @@
 #include "apps/bench/bench_log.hpp"
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
-
-#include <unistd.h>
 
 #include "apps/common/command_error.hpp"
 #include "apps/common/input_spec.hpp"
 #include "apps/output/output_rate.hpp"
+#include "apps/replay/fusion_pipeline.hpp"
 #include "apps/replay/measurement_merger.hpp"
-#include "apps/replay/progress_bar.hpp"
 #include "apps/replay/replay.hpp"
-#include "apps/replay/time_base_gate.hpp"
 #include "filter/engine.hpp"
 
 namespace navfuse::apps::bench {
 namespace {
-
-// Progress of a long log when stderr is not a terminal (CI logs, pipes): a line every 10 %,
-// where the terminal gets replay's redrawn bar instead.
-class ProgressLines {
- public:
-  ProgressLines(std::uint64_t total_bytes, bool enabled)
-      : total_(total_bytes), enabled_(enabled && total_bytes >= ProgressBar::kMinBytes && isatty(2) == 0) {}
-  void update(std::uint64_t done) {
-    if (!enabled_) return;
-    const int tenth = static_cast<int>(10 * done / total_);
-    if (tenth <= shown_) return;
-    shown_ = tenth;
-    std::fprintf(stderr, "navfuse bench: %d %% of %.0f MB processed\n", 10 * tenth, static_cast<double>(total_) / 1e6);
-  }
-
- private:
-  std::uint64_t total_;
-  bool enabled_;
-  int shown_ = 0;
-};
 
 bool is_fix(const GnssPosition& p) {
   return (p.header.valid & GnssPosition::kValidPosition) != 0 && p.fix >= GnssFixType::kFix2D &&
@@ -52,6 +27,43 @@ std::string input_name(const std::vector<InputSpec>& specs, std::size_t i) {
   return i < specs.size() ? "'" + specs[i].path + "'" : "input " + std::to_string(i);
 }
 
+// Bench's use of the stream: the device's own solution (from whichever clock, checked after the
+// run), the GNSS fix times, and navfuse's poses at the output rate, exactly as replay writes them.
+class BenchObserver final : public PipelineObserver {
+ public:
+  BenchObserver(BenchLog& log, const std::vector<InputSpec>& specs, double rate_hz)
+      : log_(log), specs_(specs), rate_(rate_hz) {}
+  void on_merged(const Measurement& m) override {
+    if (kind_of(m) != MeasurementKind::kDeviceSolution) return;
+    const MeasurementHeader& header = header_of(m);
+    if (!device_header) {
+      device_header = header;
+      log_.device_input = header.stream_id;
+      log_.device_format = std::string(specs_[header.stream_id].frontend->format);
+    }
+    if (header.stream_id == device_header->stream_id) {
+      log_.device.append(track_sample_from(std::get<NavSolution>(m)));
+    } else {
+      ++log_.other_device_solutions;
+    }
+  }
+  void on_fused(const Measurement& m) override {
+    if (kind_of(m) == MeasurementKind::kGnssPosition && is_fix(std::get<GnssPosition>(m))) {
+      log_.gnss_fix_times_ns.push_back(header_of(m).time_ns);
+    }
+  }
+  void on_imu_epoch(const filter::Engine& engine) override {
+    const NavSolution& s = engine.solution();
+    if (rate_.due(s.header.time_ns)) log_.navfuse.append(track_sample_from(s));
+  }
+  std::optional<MeasurementHeader> device_header;
+
+ private:
+  BenchLog& log_;
+  const std::vector<InputSpec>& specs_;
+  OutputRate rate_;
+};
+
 }  // namespace
 
 BenchLog collect_bench_log(const BenchLogOptions& options) {
@@ -62,59 +74,20 @@ BenchLog collect_bench_log(const BenchLogOptions& options) {
 
   MeasurementMerger merger(specs, {.chunk_bytes = 16 * 1024, .allow_truncated = options.allow_truncated});
   filter::Engine engine(filter::options_from_config(config));
-  TimeBaseGate gate;
-  OutputRate rate(config.output.rate_hz);
-  ProgressBar bar(merger.total_bytes(), options.progress);
-  ProgressLines lines(merger.total_bytes(), options.progress);
 
   BenchLog log;
   log.output_rate_hz = config.output.rate_hz;
-  std::optional<MeasurementHeader> imu_header, device_header;
-  std::uint64_t epoch = engine.imu_epoch();
-  std::uint64_t processed = 0;
-  const auto start = std::chrono::steady_clock::now();
-  Measurement m;
-  while (merger.next(m)) {
-    const MeasurementKind kind = kind_of(m);
-    const MeasurementHeader& header = header_of(m);
-    if (kind == MeasurementKind::kDeviceSolution) {
-      // Kept whatever the gate says: the device's solution is the other half of the benchmark.
-      if (!device_header) {
-        device_header = header;
-        log.device_input = header.stream_id;
-        log.device_format = std::string(specs[header.stream_id].frontend->format);
-      }
-      if (header.stream_id == device_header->stream_id) {
-        log.device.append(track_sample_from(std::get<NavSolution>(m)));
-      } else {
-        ++log.other_device_solutions;
-      }
-    }
-    if (gate.check(m)) continue;  // on another clock than the IMU: replay does not fuse it either
-    if (kind == MeasurementKind::kGnssPosition && is_fix(std::get<GnssPosition>(m))) {
-      log.gnss_fix_times_ns.push_back(header.time_ns);
-    }
-    engine.process(m);
-    if (kind == MeasurementKind::kImu) {
-      if (!imu_header) {
-        imu_header = header;
-        log.start_ns = header.time_ns;
-      }
-      log.end_ns = std::max(log.end_ns, header.time_ns);
-      ++log.imu_samples;
-      if (engine.imu_epoch() != epoch) {
-        epoch = engine.imu_epoch();
-        const NavSolution& s = engine.solution();
-        if (rate.due(s.header.time_ns)) log.navfuse.append(track_sample_from(s));
-      }
-    }
-    if ((++processed & 0x3FFF) == 0) {
-      bar.update(merger.bytes_read());
-      lines.update(merger.bytes_read());
-    }
+  BenchObserver observer(log, specs, config.output.rate_hz);
+  PipelineResult run = run_fusion_pipeline(
+      merger, engine, {.progress_bar = options.progress, .progress_lines_label = options.progress ? "navfuse bench" : nullptr},
+      observer);
+  const std::optional<MeasurementHeader>& imu_header = run.first_imu;
+  const std::optional<MeasurementHeader>& device_header = observer.device_header;
+  if (imu_header) {
+    log.start_ns = imu_header->time_ns;
+    log.end_ns = run.last_imu_ns;
   }
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  bar.clear();
+  log.imu_samples = run.imu_samples;
 
   if (!imu_header) {
     std::string names;
@@ -131,16 +104,7 @@ BenchLog collect_bench_log(const BenchLogOptions& options) {
   }
   std::sort(log.gnss_fix_times_ns.begin(), log.gnss_fix_times_ns.end());
 
-  log.summary.inputs = merger.input_summaries();
-  for (std::size_t k = 0; k < log.summary.kinds.size(); ++k) {
-    log.summary.kinds[k].decoded = merger.decoded()[k];
-    log.summary.kinds[k].used = engine.stats().kinds[k].used;
-  }
-  RunStats run;
-  run.wall_s = wall_s;
-  run.imu_samples_per_s = wall_s > 0.0 ? static_cast<double>(log.imu_samples) / wall_s : 0.0;
-  for (NavMode mode : engine.modes_reached()) run.modes_reached.emplace_back(to_string(mode));
-  log.summary.run = run;
+  log.summary = std::move(run.summary);
   return log;
 }
 

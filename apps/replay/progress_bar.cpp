@@ -30,4 +30,17 @@ void ProgressBar::clear() {
   shown_percent_ = -1;
 }
 
+ProgressLines::ProgressLines(std::uint64_t total_bytes, const char* label)
+    : total_(total_bytes),
+      label_(label),
+      enabled_(label != nullptr && total_bytes >= ProgressBar::kMinBytes && ::isatty(STDERR_FILENO) == 0) {}
+
+void ProgressLines::update(std::uint64_t bytes_done) {
+  if (!enabled_) return;
+  const int tenth = static_cast<int>(10 * bytes_done / total_);
+  if (tenth <= shown_) return;
+  shown_ = tenth;
+  std::fprintf(stderr, "%s: %d %% of %.0f MB processed\n", label_, 10 * tenth, static_cast<double>(total_) / 1e6);
+}
+
 }  // namespace navfuse::apps

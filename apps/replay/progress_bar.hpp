@@ -28,4 +28,19 @@ class ProgressBar {
   int shown_percent_ = -1;
 };
 
+// Progress of a long run when stderr is not a terminal (CI logs, pipes): a line every 10 %,
+// where a terminal gets the redrawn bar instead. `label` (e.g. "navfuse bench") starts each
+// line; nullptr disables it.
+class ProgressLines {
+ public:
+  ProgressLines(std::uint64_t total_bytes, const char* label);
+  void update(std::uint64_t bytes_done);
+
+ private:
+  std::uint64_t total_;
+  const char* label_;
+  bool enabled_;
+  int shown_ = 0;
+};
+
 }  // namespace navfuse::apps

@@ -1,6 +1,5 @@
 #include "apps/replay/replay.hpp"
 
-#include <chrono>
 #include <memory>
 #include <sstream>
 
@@ -11,9 +10,8 @@
 #include "apps/output/mip_pose_writer.hpp"
 #include "apps/output/output_rate.hpp"
 #include "apps/output/pose_outputs.hpp"
+#include "apps/replay/fusion_pipeline.hpp"
 #include "apps/replay/measurement_merger.hpp"
-#include "apps/replay/progress_bar.hpp"
-#include "apps/replay/time_base_gate.hpp"
 #include "apps/replay/truth_accuracy.hpp"
 #include "filter/engine.hpp"
 
@@ -28,24 +26,33 @@ config::DeviceProfile profile_for_format(std::string_view format) {
   return config::DeviceProfile::kGeneric;
 }
 
-// Used / rejected-by-reason of the filter, plus the app's own time-base rejections.
-void fill_measurement_counts(const filter::FilterStats& stats, const MeasurementMerger& merger,
-                             const std::array<std::map<std::string, std::uint64_t>,
-                                              static_cast<std::size_t>(MeasurementKind::kCount)>& gated,
-                             Summary& summary) {
-  for (std::size_t k = 0; k < summary.kinds.size(); ++k) {
-    KindSummary& ks = summary.kinds[k];
-    const filter::KindStats& fs = stats.kinds[k];
-    ks.decoded = merger.decoded()[k];
-    ks.used = fs.used;
-    for (std::size_t r = 0; r < fs.rejected.size(); ++r) {
-      if (fs.rejected[r] > 0) ks.rejected[std::string(filter::to_string(static_cast<filter::RejectReason>(r)))] += fs.rejected[r];
-    }
-    // A kind the filter does not fuse (device solutions, magnetometer...): "ignored".
-    if (fs.ignored > 0) ks.rejected["ignored"] += fs.ignored;
-    for (const auto& [reason, n] : gated[k]) ks.rejected[reason] += n;
+// Replay's use of the stream: every solution to the writers (IMU output), and at the output
+// rate a pose (FusionEngine / MIP / CSV) and a truth comparison.
+class ReplayObserver final : public PipelineObserver {
+ public:
+  ReplayObserver(PoseOutputs& outputs, TruthAccuracy* accuracy, double rate_hz)
+      : outputs_(outputs), accuracy_(accuracy), rate_(rate_hz), need_solution_(!outputs.empty() || accuracy != nullptr) {}
+  void on_fused(const Measurement& m) override {
+    if (kind_of(m) == MeasurementKind::kGnssPosition) num_sats_ = std::get<GnssPosition>(m).num_sats;
   }
-}
+  void on_imu_epoch(const filter::Engine& engine) override {
+    if (!need_solution_) return;
+    const NavSolution& s = engine.solution();
+    outputs_.on_imu(s);
+    if (!rate_.due(s.header.time_ns)) return;
+    ++poses;
+    outputs_.on_pose(s, engine.stats().of(MeasurementKind::kGnssPosition).used, num_sats_);
+    if (accuracy_) accuracy_->add(s);
+  }
+  std::uint64_t poses = 0;
+
+ private:
+  PoseOutputs& outputs_;
+  TruthAccuracy* accuracy_;
+  OutputRate rate_;
+  bool need_solution_;
+  std::uint8_t num_sats_ = 0;
+};
 
 }  // namespace
 
@@ -74,55 +81,17 @@ ReplayResult run_replay(const ReplayOptions& options) {
   if (!options.fe_out.empty()) outputs.add(std::make_unique<FePoseWriter>(options.fe_out));
   if (!options.mip_out.empty()) outputs.add(std::make_unique<MipPoseWriter>(options.mip_out));
   if (!options.csv_out.empty()) outputs.add(std::make_unique<CsvPoseWriter>(options.csv_out));
-  const bool need_solution = !outputs.empty() || accuracy != nullptr;
 
   filter::Engine engine(filter::options_from_config(config));
-  TimeBaseGate gate;
-  OutputRate rate(rate_hz);
-  ProgressBar progress(merger.total_bytes(), options.progress);
-  std::array<std::map<std::string, std::uint64_t>, static_cast<std::size_t>(MeasurementKind::kCount)> gated;
-
-  ReplayResult result;
-  std::uint64_t epoch = engine.imu_epoch();
-  std::uint8_t num_sats = 0;
-  std::uint64_t processed = 0;
-  Measurement m;
-  const auto start = std::chrono::steady_clock::now();
-  while (merger.next(m)) {
-    const MeasurementKind kind = kind_of(m);
-    if (const auto reason = gate.check(m)) {
-      ++gated[static_cast<std::size_t>(kind)][std::string(*reason)];
-      continue;
-    }
-    if (kind == MeasurementKind::kGnssPosition) num_sats = std::get<GnssPosition>(m).num_sats;
-    engine.process(m);
-    if (kind == MeasurementKind::kImu) {
-      ++result.imu_samples;
-      if (engine.imu_epoch() != epoch && need_solution) {
-        epoch = engine.imu_epoch();
-        const NavSolution& s = engine.solution();
-        outputs.on_imu(s);
-        if (rate.due(s.header.time_ns)) {
-          ++result.poses;
-          outputs.on_pose(s, engine.stats().of(MeasurementKind::kGnssPosition).used, num_sats);
-          if (accuracy) accuracy->add(s);
-        }
-      }
-    }
-    if ((++processed & 0x3FFF) == 0) progress.update(merger.bytes_read());
-  }
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  progress.clear();
+  ReplayObserver observer(outputs, accuracy.get(), rate_hz);
+  PipelineResult run = run_fusion_pipeline(merger, engine, {.progress_bar = options.progress}, observer);
   outputs.commit();
 
+  ReplayResult result;
+  result.imu_samples = run.imu_samples;
+  result.poses = observer.poses;
+  result.summary = std::move(run.summary);
   Summary& summary = result.summary;
-  summary.inputs = merger.input_summaries();
-  fill_measurement_counts(engine.stats(), merger, gated, summary);
-  RunStats run;
-  run.wall_s = wall_s;
-  run.imu_samples_per_s = wall_s > 0.0 ? static_cast<double>(result.imu_samples) / wall_s : 0.0;
-  for (NavMode mode : engine.modes_reached()) run.modes_reached.emplace_back(to_string(mode));
-  summary.run = run;
   summary.extra["output"] = {{"rate_hz", rate_hz}, {"poses", result.poses}};
   if (accuracy) {
     nlohmann::ordered_json a = accuracy->to_json();
