@@ -41,6 +41,17 @@ void lever(const AidSpec& s, float out[3]) {
   for (int i = 0; i < 3; ++i) out[i] = static_cast<float>(s.lever_arm_m[i]);
 }
 
+// Every LCM aiding message is stamped in GPS time (core/lcm/aid_*.lcm).
+MeasurementHeader gps_header(std::int64_t time_gps_ns, std::uint32_t valid) {
+  MeasurementHeader h;
+  h.time_ns = time_gps_ns;
+  h.time_source = TimeSource::kGps;
+  h.valid = valid;
+  return h;
+}
+
+Eigen::Vector3d vec3(const float v[3]) { return {v[0], v[1], v[2]}; }
+
 }  // namespace
 
 const char* aid_channel(const AidMessage& m) {
@@ -155,39 +166,33 @@ std::vector<AidSpec> read_aid_csv(const std::string& path) {
 
 ExternalPosition to_measurement(const navfuse::aid_position_t& m) {
   ExternalPosition p;
-  p.header.time_ns = m.time_gps_ns;
-  p.header.time_source = TimeSource::kGps;
-  p.header.valid = static_cast<std::uint32_t>(m.valid_mask) & 0x7u;
+  p.header = gps_header(m.time_gps_ns, static_cast<std::uint32_t>(m.valid_mask) & 0x7u);
   p.frame = m.frame == navfuse::aid_position_t::FRAME_ECEF ? PositionFrame::kEcef : PositionFrame::kLlh;
   if (p.frame == PositionFrame::kLlh) {
     p.value = {m.value[0] * kDeg, m.value[1] * kDeg, m.value[2]};
   } else {
     p.value = {m.value[0], m.value[1], m.value[2]};
   }
-  p.std_m = {m.std_m[0], m.std_m[1], m.std_m[2]};
-  p.lever_arm_m = {m.lever_arm_m[0], m.lever_arm_m[1], m.lever_arm_m[2]};
+  p.std_m = vec3(m.std_m);
+  p.lever_arm_m = vec3(m.lever_arm_m);
   return p;
 }
 
 ExternalVelocity to_measurement(const navfuse::aid_velocity_t& m) {
   ExternalVelocity v;
-  v.header.time_ns = m.time_gps_ns;
-  v.header.time_source = TimeSource::kGps;
-  v.header.valid = static_cast<std::uint32_t>(m.valid_mask) & 0x7u;
+  v.header = gps_header(m.time_gps_ns, static_cast<std::uint32_t>(m.valid_mask) & 0x7u);
   v.frame = m.frame == navfuse::aid_velocity_t::FRAME_ECEF      ? VelocityFrame::kEcef
             : m.frame == navfuse::aid_velocity_t::FRAME_VEHICLE ? VelocityFrame::kVehicle
                                                                 : VelocityFrame::kNed;
-  v.value_mps = {m.value_mps[0], m.value_mps[1], m.value_mps[2]};
-  v.std_mps = {m.std_mps[0], m.std_mps[1], m.std_mps[2]};
-  v.lever_arm_m = {m.lever_arm_m[0], m.lever_arm_m[1], m.lever_arm_m[2]};
+  v.value_mps = vec3(m.value_mps);
+  v.std_mps = vec3(m.std_mps);
+  v.lever_arm_m = vec3(m.lever_arm_m);
   return v;
 }
 
 ExternalHeading to_measurement(const navfuse::aid_heading_t& m) {
   ExternalHeading h;
-  h.header.time_ns = m.time_gps_ns;
-  h.header.time_source = TimeSource::kGps;
-  h.header.valid = m.valid ? ExternalHeading::kValidHeading : 0u;
+  h.header = gps_header(m.time_gps_ns, m.valid ? ExternalHeading::kValidHeading : 0u);
   h.heading_rad = m.heading_deg * kDeg;
   h.std_rad = m.std_deg * kDeg;
   return h;
@@ -195,9 +200,7 @@ ExternalHeading to_measurement(const navfuse::aid_heading_t& m) {
 
 VehicleSpeed to_measurement(const navfuse::aid_speed_t& m) {
   VehicleSpeed s;
-  s.header.time_ns = m.time_gps_ns;
-  s.header.time_source = TimeSource::kGps;
-  s.header.valid = m.valid ? VehicleSpeed::kValidSpeed : 0u;
+  s.header = gps_header(m.time_gps_ns, m.valid ? VehicleSpeed::kValidSpeed : 0u);
   s.speed_mps = m.speed_mps;
   s.speed_std_mps = m.std_mps;
   s.is_signed = true;
