@@ -41,44 +41,58 @@ double Ekf::nis(const Observation& obs) const {
 
 namespace {
 
-// The gated Joseph update on the leading N x N block. N is a compile-time constant (one of the
-// possible active dimensions) so that every product below has fixed row counts and small inner
-// dimensions m <= 3, which Eigen evaluates coefficient-wise instead of through GEMM kernels.
-template <int N>
+// The gated Joseph update on the leading N x N block for an M-row measurement. Both are
+// compile-time constants (N one of the possible active dimensions, M <= 3) so that every product
+// below has fixed sizes with inner dimension M or N, which Eigen evaluates coefficient-wise,
+// unrolled and vectorised, instead of through its blocked GEMM kernels.
+template <int N, int M>
 void joseph_update(Covariance& p, const Observation& obs, double gate, UpdateResult& result) {
-  using Gain = Eigen::Matrix<double, N, Eigen::Dynamic, 0, N, Observation::kMaxRows>;
+  using Gain = Eigen::Matrix<double, N, M>;
   using Block = Eigen::Matrix<double, N, N>;
-  const auto h = obs.h.template leftCols<N>();
+  using Square = Eigen::Matrix<double, M, M>;
+  const Eigen::Matrix<double, M, N> h = obs.h.template topLeftCorner<M, N>();
+  const Eigen::Matrix<double, M, 1> residual = obs.residual.template head<M>();
+  const Square r = obs.r.template topLeftCorner<M, M>();
   const Block pn = p.template topLeftCorner<N, N>();
 
-  // P H^T (N x m) and S = H P H^T + R (m x m).
+  // P H^T (N x M) and S = H P H^T + R (M x M).
   const Gain pht = pn.lazyProduct(h.transpose());
-  Observation::Noise s = obs.r;
+  Square s = r;
   s.noalias() += h.lazyProduct(pht);
-  Eigen::LLT<Observation::Noise> llt(s);
+  Eigen::LLT<Square> llt(s);
   if (llt.info() != Eigen::Success) {
     result.singular = true;
     return;
   }
-  result.nis = obs.residual.dot(llt.solve(obs.residual));
+  result.nis = residual.dot(llt.solve(residual));
   if (gate > 0.0 && !(result.nis <= gate)) return;
 
   // K = P H^T S^-1, as (S^-1 H P)^T since S is symmetric.
   const Gain k = llt.solve(pht.transpose()).transpose();
-  result.dx.template head<N>() = k * obs.residual;
+  result.dx.template head<N>() = k * residual;
 
-  // Joseph form through rank-m factors:
-  //   M = (I - K H) P = P - K (H P)
-  //   M (I - K H)^T = M - (M H^T) K^T
-  //   P' = M (I - K H)^T + K R K^T
-  Block mm = pn;
-  mm.noalias() -= k.lazyProduct(pht.transpose());
-  const Gain mht = mm.lazyProduct(h.transpose());
-  mm.noalias() -= mht.lazyProduct(k.transpose());
-  const Gain kr = k.lazyProduct(obs.r);
-  mm.noalias() += kr.lazyProduct(k.transpose());
-  p.template topLeftCorner<N, N>() = 0.5 * (mm + mm.transpose());
+  // Joseph form through rank-M factors:
+  //   X = (I - K H) P = P - K (H P)
+  //   X (I - K H)^T = X - (X H^T) K^T
+  //   P' = X (I - K H)^T + K R K^T
+  Block x = pn;
+  x.noalias() -= k.lazyProduct(pht.transpose());
+  const Gain xht = x.lazyProduct(h.transpose());
+  x.noalias() -= xht.lazyProduct(k.transpose());
+  const Gain kr = k.lazyProduct(r);
+  x.noalias() += kr.lazyProduct(k.transpose());
+  p.template topLeftCorner<N, N>() = 0.5 * (x + x.transpose());
   result.accepted = true;
+}
+
+template <int N>
+void joseph_update_rows(Covariance& p, const Observation& obs, double gate, UpdateResult& result) {
+  static_assert(Observation::kMaxRows == 3, "one case per possible measurement dimension");
+  switch (obs.rows()) {
+    case 1: return joseph_update<N, 1>(p, obs, gate, result);
+    case 2: return joseph_update<N, 2>(p, obs, gate, result);
+    default: return joseph_update<N, 3>(p, obs, gate, result);
+  }
 }
 
 }  // namespace
@@ -87,12 +101,12 @@ UpdateResult Ekf::update(const Observation& obs, double gate) {
   UpdateResult result;
   if (obs.rows() == 0) return result;
   switch (n) {  // the possible active dimensions (StateSelection::active_dimension)
-    case sx::kCoreCount: joseph_update<sx::kCoreCount>(p, obs, gate, result); break;
-    case sx::kWheelScale + 1: joseph_update<sx::kWheelScale + 1>(p, obs, gate, result); break;
-    case sx::kMountYaw + 1: joseph_update<sx::kMountYaw + 1>(p, obs, gate, result); break;
-    case sx::kLeverArm + 3: joseph_update<sx::kLeverArm + 3>(p, obs, gate, result); break;
-    case sx::kGyroScale + 3: joseph_update<sx::kGyroScale + 3>(p, obs, gate, result); break;
-    default: joseph_update<sx::kCount>(p, obs, gate, result); break;
+    case sx::kCoreCount: joseph_update_rows<sx::kCoreCount>(p, obs, gate, result); break;
+    case sx::kWheelScale + 1: joseph_update_rows<sx::kWheelScale + 1>(p, obs, gate, result); break;
+    case sx::kMountYaw + 1: joseph_update_rows<sx::kMountYaw + 1>(p, obs, gate, result); break;
+    case sx::kLeverArm + 3: joseph_update_rows<sx::kLeverArm + 3>(p, obs, gate, result); break;
+    case sx::kGyroScale + 3: joseph_update_rows<sx::kGyroScale + 3>(p, obs, gate, result); break;
+    default: joseph_update_rows<sx::kCount>(p, obs, gate, result); break;
   }
   return result;
 }

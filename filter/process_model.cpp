@@ -1,5 +1,6 @@
 #include "filter/process_model.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "core/rotation/rotation.hpp"
@@ -34,32 +35,82 @@ StateVector process_noise_density(const FilterOptions& o) {
 
 namespace {
 
-// P <- Phi P Phi^T + Q_d on the leading N x N block, with fixed-size matrices so the compiler
-// unrolls and vectorises the products (the per-step cost that dominates the filter loop).
+// Entries of F T (and of its leading R x R block H) with column < N, scaled by T.
 template <int N>
-void discrete_step(Covariance& p, const Covariance& f, const StateVector& q, double t) {
+struct ScaledEntries {
+  int count = 0;
+  std::array<SystemMatrix::Entry, SystemMatrix::kMaxEntries> e;
+};
+
+// P <- Phi P Phi^T + Q_d on the leading N x N block.
+//
+// With G = F T (only its first R = sx::kDynamicCount rows are non-zero) and H = its leading
+// R x R block, the truncated series Phi = I + G + G^2 / 2 is I + A with A = (I + H / 2) G, zero
+// below row R. Then
+//   Phi P Phi^T = P + P A^T + (P A^T)^T + A P A^T,
+//   P A^T = (P G^T) (I + H^T / 2),   A P A^T = (I + H / 2) (G (P A^T)),
+// and every product with G or H runs over their non-zero entries only (F is assembled as a
+// list of them): about 1,200 multiply-adds for 16 states instead of 12,000 for three dense
+// products.
+// Q_d = Q T + (F Q + Q F^T) T^2 / 2: the first two terms of the series for
+// integral(Phi Q Phi^T), exact enough at T <= 50 ms; its F Q T^2 / 2 part is again R x N.
+template <int N>
+void discrete_step(Covariance& p, const SystemMatrix& f, const StateVector& q, double t) {
+  constexpr int R = sx::kDynamicCount;
+  static_assert(N >= R, "the active block always holds position, velocity and attitude");
+  using Cols = Eigen::Matrix<double, N, R>;
   using Block = Eigen::Matrix<double, N, N>;
-  const Block ft = f.template topLeftCorner<N, N>() * t;
-  Block phi = Block::Identity() + ft;
-  phi.noalias() += 0.5 * ft * ft;
-  // Q_d = Q T + (F Q + Q F^T) T^2 / 2: the first two terms of the series for
-  // integral(Phi Q Phi^T), exact enough at T <= 50 ms.
-  Block qd = (ft * q.template head<N>().asDiagonal()) * (0.5 * t);
-  qd = (qd + qd.transpose()).eval();
-  qd.diagonal() += q.template head<N>() * t;
-  Block tmp;
-  tmp.noalias() = phi * p.template topLeftCorner<N, N>();
-  Block next = qd;
-  next.noalias() += tmp * phi.transpose();
+  ScaledEntries<N> g, h;
+  for (int i = 0; i < f.count; ++i) {
+    const SystemMatrix::Entry& e = f.entries[i];
+    if (e.col >= N) continue;  // an inactive state
+    g.e[g.count++] = {e.row, e.col, e.value * t};
+    if (e.col < R) h.e[h.count++] = {e.row, e.col, e.value * t};
+  }
+  const Block pn = p.template topLeftCorner<N, N>();
+
+  // W = P G^T: column i gathers G(i, k) P.col(k).
+  Cols w = Cols::Zero();
+  for (int i = 0; i < g.count; ++i) w.col(g.e[i].row) += g.e[i].value * pn.col(g.e[i].col);
+  // P A^T = W + W H^T / 2.
+  Cols pat = w;
+  for (int i = 0; i < h.count; ++i) pat.col(h.e[i].row) += (0.5 * h.e[i].value) * w.col(h.e[i].col);
+  // Y = G (P A^T), then A P A^T = Y + H Y / 2.
+  Eigen::Matrix<double, R, R> y = Eigen::Matrix<double, R, R>::Zero();
+  for (int i = 0; i < g.count; ++i) y.row(g.e[i].row) += g.e[i].value * pat.row(g.e[i].col);
+  Eigen::Matrix<double, R, R> apat = y;
+  for (int i = 0; i < h.count; ++i) apat.row(h.e[i].row) += (0.5 * h.e[i].value) * y.row(h.e[i].col);
+  // Q F^T T^2 / 2 (N x R): entry (k, i) = q_k G(i, k) T / 2.
+  for (int i = 0; i < g.count; ++i) pat(g.e[i].col, g.e[i].row) += q(g.e[i].col) * g.e[i].value * (0.5 * t);
+
+  Block next = pn;
+  next.template leftCols<R>() += pat;
+  next.template topRows<R>() += pat.transpose();
+  next.template topLeftCorner<R, R>() += apat;
+  next.diagonal() += q.template head<N>() * t;
   p.template topLeftCorner<N, N>() = 0.5 * (next + next.transpose());
 }
 
 }  // namespace
 
-void propagate_covariance(Covariance& p, int n, const NavState& x, const LocalEarth& earth,
-                          const ProcessAccumulator& step, const StateVector& q) {
+void SystemMatrix::add(int row, int col, double value) {
+  if (value != 0.0) entries[count++] = {row, col, value};
+}
+
+void SystemMatrix::add_block(int row, int col, const Eigen::Matrix3d& block) {
+  for (int c = 0; c < 3; ++c) {
+    for (int r = 0; r < 3; ++r) add(row + r, col + c, block(r, c));
+  }
+}
+
+SystemRows SystemMatrix::dense() const {
+  SystemRows f = SystemRows::Zero();
+  for (int i = 0; i < count; ++i) f(entries[i].row, entries[i].col) += entries[i].value;
+  return f;
+}
+
+SystemMatrix system_matrix(const NavState& x, const LocalEarth& earth, const ProcessAccumulator& step) {
   const double t = step.dt_s;
-  if (t <= 0.0) return;
   const Eigen::Matrix3d c_nb = x.q_nb.toRotationMatrix();
   const Eigen::Vector3d f_b = step.dvel_mps / t;
   const Eigen::Vector3d w_b = step.dtheta_rad / t;
@@ -71,32 +122,39 @@ void propagate_covariance(Covariance& p, int n, const NavState& x, const LocalEa
   const double tan_lat = std::tan(x.lat_rad);
   const double omega = w_ie.norm();
 
-  Covariance f = Covariance::Zero();
+  SystemMatrix f;
   // Position: d(dr)/dt = dv (the curvature terms are O(v/R) ~ 1e-6 /s and are dropped).
-  f.block<3, 3>(sx::kPos, sx::kVel).setIdentity();
+  for (int i = 0; i < 3; ++i) f.add(sx::kPos + i, sx::kVel + i, 1.0);
   // Velocity: Coriolis, the vertical gravity gradient 2 g / R (the term that makes the vertical
   // channel unstable), tilt coupling [f^n x] and the accelerometer errors.
-  f.block<3, 3>(sx::kVel, sx::kVel) = -rot::skew(2.0 * w_ie + w_en);
-  f(sx::kVel + 2, sx::kPos + 2) =
-      2.0 * earth.gravity_ned_mps2.z() / (std::sqrt(earth.radii.meridian_m * earth.radii.prime_vertical_m) + x.height_m);
-  f.block<3, 3>(sx::kVel, sx::kAtt) = rot::skew(f_n);
-  f.block<3, 3>(sx::kVel, sx::kAccelBias) = -c_nb;
-  f.block<3, 3>(sx::kVel, sx::kAccelScale) = -c_nb * f_b.asDiagonal();
+  f.add_block(sx::kVel, sx::kVel, -rot::skew(2.0 * w_ie + w_en));
+  f.add(sx::kVel + 2, sx::kPos + 2,
+        2.0 * earth.gravity_ned_mps2.z() / (std::sqrt(earth.radii.meridian_m * earth.radii.prime_vertical_m) + x.height_m));
+  f.add_block(sx::kVel, sx::kAtt, rot::skew(f_n));
+  f.add_block(sx::kVel, sx::kAccelBias, -c_nb);
+  f.add_block(sx::kVel, sx::kAccelScale, -c_nb * f_b.asDiagonal());
   // Attitude: phi_dot = -w_in x phi + d(w_in) + C_nb (d b_g + diag(w) d s_g), with d(w_in) the
   // earth-rate change with latitude and the transport-rate change with velocity.
-  f.block<3, 3>(sx::kAtt, sx::kAtt) = -rot::skew(w_ie + w_en);
-  f(sx::kAtt + 0, sx::kPos + 0) = -omega * std::sin(x.lat_rad) / rn_h;
-  f(sx::kAtt + 2, sx::kPos + 0) = -omega * std::cos(x.lat_rad) / rn_h;
-  f(sx::kAtt + 0, sx::kVel + 1) = 1.0 / re_h;
-  f(sx::kAtt + 1, sx::kVel + 0) = -1.0 / rn_h;
-  f(sx::kAtt + 2, sx::kVel + 1) = -tan_lat / re_h;
-  f.block<3, 3>(sx::kAtt, sx::kGyroBias) = c_nb;
-  f.block<3, 3>(sx::kAtt, sx::kGyroScale) = c_nb * w_b.asDiagonal();
+  f.add_block(sx::kAtt, sx::kAtt, -rot::skew(w_ie + w_en));
+  f.add(sx::kAtt + 0, sx::kPos + 0, -omega * std::sin(x.lat_rad) / rn_h);
+  f.add(sx::kAtt + 2, sx::kPos + 0, -omega * std::cos(x.lat_rad) / rn_h);
+  f.add(sx::kAtt + 0, sx::kVel + 1, 1.0 / re_h);
+  f.add(sx::kAtt + 1, sx::kVel + 0, -1.0 / rn_h);
+  f.add(sx::kAtt + 2, sx::kVel + 1, -tan_lat / re_h);
+  f.add_block(sx::kAtt, sx::kGyroBias, c_nb);
+  f.add_block(sx::kAtt, sx::kGyroScale, c_nb * w_b.asDiagonal());
   // Biases: F = 0. The bias is a turn-on constant plus a slow Gauss-Markov part; a -1/tau decay
   // on the sum would pull the (large) turn-on estimate toward zero and decorrelate it from the
   // tilt it was levelled with. Over the filter's horizons (tau >= minutes) the GM part is a random
   // walk with the GM driving noise, which process_noise_density supplies.
+  return f;
+}
 
+void propagate_covariance(Covariance& p, int n, const NavState& x, const LocalEarth& earth,
+                          const ProcessAccumulator& step, const StateVector& q) {
+  const double t = step.dt_s;
+  if (t <= 0.0) return;
+  const SystemMatrix f = system_matrix(x, earth, step);
   switch (n) {  // the possible active dimensions (StateSelection::active_dimension)
     case sx::kCoreCount: return discrete_step<sx::kCoreCount>(p, f, q, t);
     case sx::kWheelScale + 1: return discrete_step<sx::kWheelScale + 1>(p, f, q, t);

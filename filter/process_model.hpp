@@ -9,6 +9,8 @@
 // but multiplies milliradian errors), so the truncation error is well below the process noise.
 #pragma once
 
+#include <array>
+
 #include <Eigen/Core>
 
 #include "filter/filter_options.hpp"
@@ -33,6 +35,26 @@ struct ProcessAccumulator {
 
 // Continuous-time white-noise spectral densities, one per state (zero for random constants).
 StateVector process_noise_density(const FilterOptions& options);
+
+// The continuous-time system matrix F at state `x` for the step's mean specific force and
+// angular rate, as the list of its non-zero entries (about 60 of 27 x 27; all in rows
+// [0, sx::kDynamicCount)), which is what the covariance step multiplies with.
+using SystemRows = Eigen::Matrix<double, sx::kDynamicCount, sx::kCount>;
+struct SystemMatrix {
+  struct Entry {
+    int row;
+    int col;
+    double value;
+  };
+  static constexpr int kMaxEntries = 3 + 5 * 9 + 1 + 5 * 9;  // the blocks system_matrix() writes
+  std::array<Entry, kMaxEntries> entries;
+  int count = 0;
+
+  void add(int row, int col, double value);  // exact zeros are not stored
+  void add_block(int row, int col, const Eigen::Matrix3d& block);
+  SystemRows dense() const;  // rows [0, sx::kDynamicCount) of F
+};
+SystemMatrix system_matrix(const NavState& x, const LocalEarth& earth, const ProcessAccumulator& step);
 
 // P <- Phi P Phi^T + Q_d over the accumulated step (a no-op for an empty step).
 void propagate_covariance(Covariance& p, int active_dimension, const NavState& x,

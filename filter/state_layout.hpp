@@ -28,6 +28,10 @@ inline constexpr int kLeverArm = 18;    // primary GNSS antenna lever arm error,
 inline constexpr int kGyroScale = 21;   // gyro scale factor errors, dimensionless (3)
 inline constexpr int kAccelScale = 24;  // accelerometer scale factor errors, dimensionless (3)
 inline constexpr int kCount = 27;       // the largest state set
+// Position, velocity and attitude are the only states with dynamics: every row of the system
+// matrix F below this index may be non-zero, every row from it on is zero (biases and
+// calibration states are random walks / constants). The covariance step exploits it.
+inline constexpr int kDynamicCount = kGyroBias;
 
 // Attitude rows: north, east, down tilt/heading components of phi.
 inline constexpr int kAttDown = kAtt + 2;

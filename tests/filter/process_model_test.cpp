@@ -1,0 +1,87 @@
+// The covariance step against the textbook dense form: Phi = I + F T + (F T)^2 / 2 and
+// P' = Phi P Phi^T + Q T + (F Q + Q F^T) T^2 / 2 (Groves 2nd ed. §3.2.3 / §14.2.4), computed here
+// with plain full-size matrix products. The filter's version works on the non-zero rows of F
+// only; both must agree to rounding.
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "core/rotation/rotation.hpp"
+#include "filter/process_model.hpp"
+
+namespace navfuse::filter {
+namespace {
+
+Covariance random_covariance(int n, std::mt19937& rng) {
+  std::normal_distribution<double> g(0.0, 1.0);
+  Eigen::MatrixXd a(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) a(i, j) = g(rng) * (0.1 + i * 0.05);
+  Covariance p = Covariance::Zero();
+  p.topLeftCorner(n, n) = a * a.transpose() + Eigen::MatrixXd::Identity(n, n) * 1e-3;
+  return p;
+}
+
+Covariance dense_reference(const Covariance& p0, int n, const SystemRows& rows, const StateVector& q, double t) {
+  Covariance f = Covariance::Zero();  // F with its zero rows written out
+  f.topRows<sx::kDynamicCount>() = rows;
+  const Eigen::MatrixXd ft = f.topLeftCorner(n, n) * t;
+  const Eigen::MatrixXd phi = Eigen::MatrixXd::Identity(n, n) + ft + 0.5 * ft * ft;
+  const Eigen::MatrixXd qm = q.head(n).asDiagonal();
+  const Eigen::MatrixXd qd = qm * t + (f.topLeftCorner(n, n) * qm + qm * f.topLeftCorner(n, n).transpose()) * (0.5 * t * t);
+  Covariance out = p0;
+  out.topLeftCorner(n, n) = phi * p0.topLeftCorner(n, n) * phi.transpose() + qd;
+  return out;
+}
+
+TEST(ProcessModel, SystemMatrixHasTheClosedFormBlocks) {
+  NavState x;
+  x.lat_rad = 0.7;
+  x.height_m = 120.0;
+  x.vel_ned_mps = {12.0, -3.0, 0.4};
+  x.q_nb = rot::quat_from_rpy({0.05, -0.02, 1.1});
+  ProcessAccumulator step;
+  step.dt_s = 0.05;
+  step.dtheta_rad = {0.001, -0.002, 0.01};
+  step.dvel_mps = {0.05, 0.02, -0.49};
+  const SystemRows f = system_matrix(x, LocalEarth::at(x.lat_rad, x.height_m), step).dense();
+  const Eigen::Matrix3d c_nb = x.q_nb.toRotationMatrix();
+  // The phi-angle model (Shin 2005 ch. 3): dr' = dv, dv' contains -C_nb db_a, phi' contains
+  // C_nb db_g, and the tilt coupling [f^n x] with f^n = C_nb f^b.
+  EXPECT_TRUE((f.block<3, 3>(sx::kPos, sx::kVel).isIdentity(0.0)));
+  EXPECT_TRUE((f.block<3, 3>(sx::kVel, sx::kAccelBias).isApprox(-c_nb, 1e-15)));
+  EXPECT_TRUE((f.block<3, 3>(sx::kAtt, sx::kGyroBias).isApprox(c_nb, 1e-15)));
+  const Eigen::Vector3d f_n = c_nb * (step.dvel_mps / step.dt_s);
+  EXPECT_NEAR(f(sx::kVel + 0, sx::kAtt + 1), -f_n.z(), 1e-12);
+  EXPECT_NEAR(f(sx::kVel + 1, sx::kAtt + 0), f_n.z(), 1e-12);
+}
+
+TEST(ProcessModel, SparseStepMatchesDenseFormForEveryActiveDimension) {
+  std::mt19937 rng(7);
+  NavState x;
+  x.lat_rad = -0.6;
+  x.height_m = 850.0;
+  x.vel_ned_mps = {-20.0, 15.0, -1.0};
+  x.q_nb = rot::quat_from_rpy({-0.1, 0.08, -2.5});
+  ProcessAccumulator step;
+  step.dt_s = 0.05;
+  step.dtheta_rad = {0.02, 0.004, -0.03};
+  step.dvel_mps = {0.3, -0.1, -0.5};
+  const LocalEarth earth = LocalEarth::at(x.lat_rad, x.height_m);
+  StateVector q;
+  for (int i = 0; i < sx::kCount; ++i) q(i) = 1e-6 * (1 + i);
+  const SystemRows f = system_matrix(x, earth, step).dense();
+  for (int n : {sx::kCoreCount, sx::kWheelScale + 1, sx::kMountYaw + 1, sx::kLeverArm + 3, sx::kGyroScale + 3,
+                sx::kCount}) {
+    SCOPED_TRACE(n);
+    const Covariance p0 = random_covariance(n, rng);
+    Covariance p = p0;
+    propagate_covariance(p, n, x, earth, step, q);
+    const Covariance expected = dense_reference(p0, n, f, q, step.dt_s);
+    EXPECT_LT((p - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+    EXPECT_EQ((p - p.transpose()).cwiseAbs().maxCoeff(), 0.0);
+  }
+}
+
+}  // namespace
+}  // namespace navfuse::filter
