@@ -3,6 +3,7 @@
 target_sources(navfuse_apps PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/lcm_aiding_subscriber.cpp
   ${CMAKE_CURRENT_LIST_DIR}/lcm_messages.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/lcm_pose_writer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/lcm_publisher.cpp)
 target_link_libraries(navfuse_apps PUBLIC navfuse_lcm)
 # lcm-gen 1.3's C++ for types that contain other types (status_t) compares a void* with a

@@ -3,4 +3,5 @@ target_sources(navfuse_apps PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/csv_pose_writer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/fe_pose_writer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mip_pose_writer.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/output_file.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/output_file.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/pose_output_thread.cpp)

@@ -69,6 +69,7 @@ PipelineResult run_fusion_pipeline(MeasurementMerger& merger, filter::Engine& en
       lines.update(merger.bytes_read());
     }
   }
+  observer.on_finished();
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   bar.clear();
 

@@ -25,6 +25,9 @@ class PipelineObserver {
   virtual void on_fused(const Measurement&) {}
   // The filter advanced by one IMU sample: engine.solution() is the new pose.
   virtual void on_imu_epoch(const filter::Engine&) {}
+  // Every input is used up; still inside the timed part of the run (work the observer has
+  // handed to another thread finishes here).
+  virtual void on_finished() {}
 };
 
 struct PipelineOptions {

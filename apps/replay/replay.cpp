@@ -1,14 +1,17 @@
 #include "apps/replay/replay.hpp"
 
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "apps/common/command_error.hpp"
 #include "apps/common/input_spec.hpp"
+#include "apps/lcm/lcm_pose_writer.hpp"
 #include "apps/output/csv_pose_writer.hpp"
 #include "apps/output/fe_pose_writer.hpp"
 #include "apps/output/mip_pose_writer.hpp"
 #include "apps/output/output_rate.hpp"
+#include "apps/output/pose_output_thread.hpp"
 #include "apps/output/pose_outputs.hpp"
 #include "apps/replay/fusion_pipeline.hpp"
 #include "apps/replay/measurement_merger.hpp"
@@ -27,30 +30,36 @@ config::DeviceProfile profile_for_format(std::string_view format) {
 }
 
 // Replay's use of the stream: every solution to the writers (IMU output), and at the output
-// rate a pose (FusionEngine / MIP / CSV) and a truth comparison.
+// rate a pose (FusionEngine / MIP / CSV) and a truth comparison. The writers run on their own
+// thread (PoseOutputThread); the truth comparison is cheap and stays here.
 class ReplayObserver final : public PipelineObserver {
  public:
   ReplayObserver(PoseOutputs& outputs, TruthAccuracy* accuracy, double rate_hz)
-      : outputs_(outputs), accuracy_(accuracy), rate_(rate_hz), need_solution_(!outputs.empty() || accuracy != nullptr) {}
+      : accuracy_(accuracy), rate_(rate_hz) {
+    if (!outputs.empty()) writer_.emplace(outputs);
+  }
   void on_fused(const Measurement& m) override {
     if (kind_of(m) == MeasurementKind::kGnssPosition) num_sats_ = std::get<GnssPosition>(m).num_sats;
   }
   void on_imu_epoch(const filter::Engine& engine) override {
-    if (!need_solution_) return;
+    if (!writer_ && accuracy_ == nullptr) return;
     const NavSolution& s = engine.solution();
-    outputs_.on_imu(s);
-    if (!rate_.due(s.header.time_ns)) return;
+    const bool pose_due = rate_.due(s.header.time_ns);
+    if (writer_) writer_->post(s, pose_due, engine.stats().of(MeasurementKind::kGnssPosition).used, num_sats_);
+    if (!pose_due) return;
     ++poses;
-    outputs_.on_pose(s, engine.stats().of(MeasurementKind::kGnssPosition).used, num_sats_);
     if (accuracy_) accuracy_->add(s);
+  }
+  // Inside the timed run: the summary's rate includes writing the last epochs.
+  void on_finished() override {
+    if (writer_) writer_->finish();
   }
   std::uint64_t poses = 0;
 
  private:
-  PoseOutputs& outputs_;
   TruthAccuracy* accuracy_;
   OutputRate rate_;
-  bool need_solution_;
+  std::optional<PoseOutputThread> writer_;
   std::uint8_t num_sats_ = 0;
 };
 
@@ -81,6 +90,12 @@ ReplayResult run_replay(const ReplayOptions& options) {
   if (!options.fe_out.empty()) outputs.add(std::make_unique<FePoseWriter>(options.fe_out));
   if (!options.mip_out.empty()) outputs.add(std::make_unique<MipPoseWriter>(options.mip_out));
   if (!options.csv_out.empty()) outputs.add(std::make_unique<CsvPoseWriter>(options.csv_out));
+  const LcmPoseWriter* lcm = nullptr;
+  if (options.lcm_url) {
+    auto writer = std::make_unique<LcmPoseWriter>(*options.lcm_url);
+    lcm = writer.get();
+    outputs.add(std::move(writer));
+  }
 
   filter::Engine engine(filter::options_from_config(config));
   ReplayObserver observer(outputs, accuracy.get(), rate_hz);
@@ -93,6 +108,7 @@ ReplayResult run_replay(const ReplayOptions& options) {
   result.summary = std::move(run.summary);
   Summary& summary = result.summary;
   summary.extra["output"] = {{"rate_hz", rate_hz}, {"poses", result.poses}};
+  if (lcm) summary.extra["lcm"] = {{"published", lcm->published()}, {"failures", lcm->failures()}};
   if (accuracy) {
     nlohmann::ordered_json a = accuracy->to_json();
     a["truth"] = options.truth_path;

@@ -25,6 +25,7 @@ struct ReplayOptions {
   std::vector<std::string> inputs;
   std::string fe_out, mip_out, csv_out;
   std::string truth_path;
+  std::optional<std::string> lcm_url;  // --lcm [URL]: NAVFUSE_POSE / NAVFUSE_IMU at the pose rate ("" = LCM's default)
   std::optional<double> output_rate_hz;  // overrides the config's output.rate_hz
   bool allow_truncated = false;
   bool progress = false;  // progress bar on stderr (only drawn when it is a terminal)

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <memory>
 
+#include "apps/common/command_error.hpp"
 #include "apps/common/summary.hpp"
 #include "apps/replay/replay.hpp"
 
@@ -13,11 +14,21 @@ struct ReplayArgs {
   ReplayOptions options;
   std::string summary_json;
   double rate_hz = -1.0;
+  std::string lcm_url;
+  CLI::Option* lcm = nullptr;
   bool quiet = false;
 };
 
 int run(ReplayArgs& args) {
   if (args.rate_hz >= 0.0) args.options.output_rate_hz = args.rate_hz;
+  if (args.lcm->count() > 0) {
+    // --lcm takes an optional value, so `--lcm LOG` would read the log as the URL.
+    if (!args.lcm_url.empty() && args.lcm_url.find("://") == std::string::npos) {
+      throw CommandError("--lcm: '" + args.lcm_url + "' is not an LCM URL (e.g. udpm://239.255.76.67:7667?ttl=0); "
+                         "write --lcm=URL, or put --lcm after the inputs");
+    }
+    args.options.lcm_url = args.lcm_url;
+  }
   args.options.progress = !args.quiet;
   const ReplayResult result = run_replay(args.options);
   if (!args.summary_json.empty()) write_json_file(args.summary_json, result.summary.to_json(/*decode_only=*/false));
@@ -26,7 +37,11 @@ int run(ReplayArgs& args) {
   }
   if (!args.quiet) {
     result.summary.print(std::cout, /*decode_only=*/false);
-    std::cout << "poses: " << result.poses << "\n" << result.accuracy_text;
+    std::cout << "poses: " << result.poses << "\n";
+    if (const auto it = result.summary.extra.find("lcm"); it != result.summary.extra.end()) {
+      std::cout << "lcm: " << (*it)["published"] << " messages published, " << (*it)["failures"] << " failed\n";
+    }
+    std::cout << result.accuracy_text;
   }
   return 0;
 }
@@ -44,6 +59,9 @@ void add_replay_command(CLI::App& root, int& exit_code) {
   sub->add_option("--fe-out", o.fe_out, "Write FusionEngine Pose/PoseAux/GNSSInfo/IMUOutput to this file");
   sub->add_option("--mip-out", o.mip_out, "Write MIP filter (0x82) packets to this file");
   sub->add_option("--csv", o.csv_out, "Write one CSV row per pose to this file");
+  args->lcm = sub->add_option("--lcm", args->lcm_url,
+                              "Publish NAVFUSE_POSE and NAVFUSE_IMU at the pose rate on LCM [URL]")
+                   ->expected(0, 1);
   sub->add_option("--summary-json", args->summary_json, "Write the summary as JSON to this file");
   sub->add_option("--truth", o.truth_path, "Truth CSV (navfuse sim --truth): report the error against it");
   sub->add_option("--rate", args->rate_hz, "Pose output rate in Hz, overriding output.rate_hz (0 = every IMU sample)")

@@ -1,0 +1,18 @@
+#include "apps/lcm/lcm_pose_writer.hpp"
+
+#include "apps/common/command_error.hpp"
+#include "apps/output/fe_pose_writer.hpp"
+
+namespace navfuse::apps {
+
+LcmPoseWriter::LcmPoseWriter(const std::string& url) : lcm_(url), publisher_(lcm_) {
+  if (!lcm_.good()) throw CommandError("--lcm: cannot open LCM '" + (url.empty() ? std::string("default") : url) + "'");
+}
+
+void LcmPoseWriter::on_pose(const PoseEpoch& epoch) {
+  publisher_.publish_pose(epoch.solution);
+  // The solution's IMU is already in the vehicle frame: published with an identity mounting.
+  if (compensated_imu_from(epoch.solution, imu_)) publisher_.publish_imu(imu_);
+}
+
+}  // namespace navfuse::apps
