@@ -75,14 +75,19 @@ void FilterCore::propagate(const FilterOptions& o, const ImuIncrement& raw) {
   const ImuIncrement comp = compensate(raw, x);
   rate_b_rps = comp.dtheta_rad / comp.dt_s;
   force_b_mps2 = comp.dvel_mps / comp.dt_s;
-  if (step.dt_s == 0.0) earth = LocalEarth::at(x.lat_rad, x.height_m);
-  const std::int64_t previous_ns = x.time_ns;
-  strapdown_step(x, memory, comp, earth);
-  step.add(comp);
   // Covariance steps end on a fixed time grid, so measurements stamped on the same grid (GNSS,
   // odometry and the constraints at 5-20 Hz) find the covariance already current and the update
   // costs no extra propagation.
   const std::int64_t grid_ns = std::max<std::int64_t>(1, std::llround(o.covariance_interval_s * 1e9));
+  // Gravity, earth rate and radii are refreshed once per grid step (<= 50 ms: at most a few
+  // metres of travel, a change of ~1e-5 m/s^2 in gravity), not at every measurement update.
+  if (step.dt_s == 0.0 && x.time_ns / grid_ns != earth_cell) {
+    earth = LocalEarth::at(x.lat_rad, x.height_m);
+    earth_cell = x.time_ns / grid_ns;
+  }
+  const std::int64_t previous_ns = x.time_ns;
+  strapdown_step(x, memory, comp, earth);
+  step.add(comp);
   if (x.time_ns / grid_ns != previous_ns / grid_ns || step.dt_s >= o.covariance_interval_s - 1e-9) {
     flush_covariance(o);
   }

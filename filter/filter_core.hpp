@@ -101,6 +101,7 @@ struct FilterCore {
   StrapdownMemory memory;
   ProcessAccumulator step;
   LocalEarth earth;
+  std::int64_t earth_cell = INT64_MIN;  // covariance grid step `earth` was computed in
   StateVector noise_density = StateVector::Zero();
   StateVector variance_floor = StateVector::Zero();
   Eigen::Vector3d rate_b_rps = Eigen::Vector3d::Zero();    // compensated, newest sample
