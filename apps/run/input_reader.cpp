@@ -120,6 +120,7 @@ void InputReader::run() {
   }
   publish_counters();
   ended_.store(true, std::memory_order_release);
+  if (!stop_.load(std::memory_order_relaxed)) log_event("input '" + endpoint_.text + "' ended");
 }
 
 void InputReader::feed(std::span<const std::uint8_t> bytes) {

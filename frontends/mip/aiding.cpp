@@ -265,8 +265,11 @@ ReplyCode AidingCommandHandler::measurement(std::uint8_t desc, std::span<const s
       h.source = TimeSource::kGps;
       break;
     case AidingTimebase::kTimeOfArrival:
+      // The caller's arrival time is GPS time (the nav process passes the GPS time of its newest
+      // IMU epoch), so the measurement is on the IMU's time axis. Without one (decoding a log)
+      // the arrival time is unknown.
       h.time_ns = arrival_gps_ns;
-      h.source = TimeSource::kHostArrival;
+      h.source = arrival_gps_ns > 0 ? TimeSource::kGps : TimeSource::kHostArrival;
       break;
     default:
       return ReplyCode::kInvalidParameter;

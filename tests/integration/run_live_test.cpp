@@ -84,17 +84,6 @@ class LcmListener {
   std::atomic<bool> stop_{false};
 };
 
-std::uint16_t free_tcp_port() {
-  io::UniqueFd fd(::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0));
-  sockaddr_in a{};
-  a.sin_family = AF_INET;
-  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  ::bind(fd.get(), reinterpret_cast<const sockaddr*>(&a), sizeof a);
-  socklen_t len = sizeof a;
-  ::getsockname(fd.get(), reinterpret_cast<sockaddr*>(&a), &len);
-  return ntohs(a.sin_port);
-}
-
 // Plays pieces [first, last) of the log into the device at kSpeedUp times real time.
 bool play(PtyDevice& device, const SimLog& log, std::size_t first, std::size_t last) {
   const auto wall_start = std::chrono::steady_clock::now();
@@ -151,7 +140,7 @@ TEST_F(RunLiveTest, SerialDeviceLcmAidingFeCommandsReplugAndSigterm) {
   ASSERT_GT(log.pieces.size(), 1000u);
   const std::string config = write_file(dir_ / "vn300.yaml", "device: vn300\noutput:\n  rate_hz: 50\n");
   const std::string lcm_url = private_lcm_url(2);
-  const std::uint16_t fe_port = free_tcp_port();
+  const std::uint16_t fe_port = free_port(SOCK_STREAM);
   const std::string mip_out = (dir_ / "out.mip").string();
   const std::string summary = (dir_ / "summary.json").string();
 

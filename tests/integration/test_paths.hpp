@@ -2,6 +2,9 @@
 // that do not collide with other test processes running at the same time on this machine.
 #pragma once
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
 #include <cstdint>
@@ -36,6 +39,20 @@ inline std::string write_file(const std::filesystem::path& path, const std::stri
 inline std::string private_lcm_url(int salt) {
   const int port = 20000 + static_cast<int>((static_cast<unsigned>(::getpid()) * 16u + static_cast<unsigned>(salt)) % 40000u);
   return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0";
+}
+
+// A port the kernel just handed out for `type` (SOCK_STREAM / SOCK_DGRAM) on loopback, free
+// again when this returns: for a child process to bind.
+inline std::uint16_t free_port(int type) {
+  const int fd = ::socket(AF_INET, type | SOCK_CLOEXEC, 0);
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ::bind(fd, reinterpret_cast<const sockaddr*>(&a), sizeof a);
+  socklen_t len = sizeof a;
+  ::getsockname(fd, reinterpret_cast<sockaddr*>(&a), &len);
+  ::close(fd);
+  return ntohs(a.sin_port);
 }
 
 }  // namespace navfuse::test
