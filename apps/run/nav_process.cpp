@@ -128,9 +128,9 @@ void NavProcess::filter_loop() {
 void NavProcess::process(const ArrivedMeasurement& item) {
   const Measurement& m = item.measurement;
   const auto kind = kind_of(m);
-  ++decoded_[static_cast<std::size_t>(kind)];
-  if (gate_.check(m)) {
-    ++time_base_[static_cast<std::size_t>(kind)];
+  ++counts_.decoded[static_cast<std::size_t>(kind)];
+  if (const auto reason = gate_.check(m)) {
+    counts_.count_gated(kind, *reason);
     ++time_base_total_;
     return;
   }
@@ -211,18 +211,7 @@ Summary NavProcess::summary() const {
     is.counters.bad_frames = c.bad_frames;
     s.inputs.push_back(std::move(is));
   }
-  const filter::FilterStats& stats = engine_->stats();
-  for (std::size_t k = 0; k < s.kinds.size(); ++k) {
-    KindSummary& ks = s.kinds[k];
-    const filter::KindStats& fs = stats.kinds[k];
-    ks.decoded = decoded_[k];
-    ks.used = fs.used;
-    for (std::size_t r = 0; r < fs.rejected.size(); ++r) {
-      if (fs.rejected[r] > 0) ks.rejected[std::string(filter::to_string(static_cast<filter::RejectReason>(r)))] = fs.rejected[r];
-    }
-    if (fs.ignored > 0) ks.rejected["ignored"] = fs.ignored;
-    if (time_base_[k] > 0) ks.rejected["time_base"] = time_base_[k];
-  }
+  fill_measurement_counts(engine_->stats(), counts_, s);
   RunStats run;
   const std::int64_t end_ns = stopped_ns_ > 0 ? stopped_ns_ : monotonic_ns();
   run.wall_s = started_ns_ > 0 ? static_cast<double>(end_ns - started_ns_) * 1e-9 : 0.0;

@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "apps/common/measurement_counts.hpp"
 #include "apps/common/summary.hpp"
 #include "apps/output/output_rate.hpp"
 #include "apps/replay/time_base_gate.hpp"
@@ -84,9 +85,8 @@ class NavProcess {
   GnssPosition pending_fix_;  // waiting for the velocity of the same epoch (NAVFUSE_GNSS)
   bool fix_pending_ = false;
   std::int64_t next_status_ns_ = 0;
-  std::array<std::uint64_t, static_cast<std::size_t>(MeasurementKind::kCount)> decoded_{};
-  std::array<std::uint64_t, static_cast<std::size_t>(MeasurementKind::kCount)> time_base_{};
-  std::uint64_t time_base_total_ = 0;
+  MeasurementCounts counts_;       // decoded, and kept from the filter by gate_ (by reason)
+  std::uint64_t time_base_total_ = 0;  // everything gate_ rejected, for NAVFUSE_STATUS
   std::uint64_t imu_samples_ = 0;
   std::int64_t started_ns_ = 0;
   std::int64_t stopped_ns_ = 0;

@@ -1,0 +1,27 @@
+#include "apps/common/measurement_counts.hpp"
+
+namespace navfuse::apps {
+
+void MeasurementCounts::count_gated(MeasurementKind kind, std::string_view reason) {
+  auto& reasons = gated[static_cast<std::size_t>(kind)];
+  auto it = reasons.find(reason);
+  if (it == reasons.end()) it = reasons.emplace(std::string(reason), 0).first;
+  ++it->second;
+}
+
+void fill_measurement_counts(const filter::FilterStats& stats, const MeasurementCounts& counts, Summary& summary) {
+  for (std::size_t k = 0; k < summary.kinds.size(); ++k) {
+    KindSummary& ks = summary.kinds[k];
+    const filter::KindStats& fs = stats.kinds[k];
+    ks.decoded = counts.decoded[k];
+    ks.used = fs.used;
+    for (std::size_t r = 0; r < fs.rejected.size(); ++r) {
+      if (fs.rejected[r] > 0) ks.rejected[std::string(filter::to_string(static_cast<filter::RejectReason>(r)))] += fs.rejected[r];
+    }
+    // A kind the filter does not fuse (device solutions, magnetometer...): "ignored".
+    if (fs.ignored > 0) ks.rejected["ignored"] += fs.ignored;
+    for (const auto& [reason, n] : counts.gated[k]) ks.rejected[reason] += n;
+  }
+}
+
+}  // namespace navfuse::apps
