@@ -10,6 +10,7 @@
 
 #include "apps/aid/aid_message.hpp"
 #include "apps/common/command_error.hpp"
+#include "apps/lcm/lcm_open.hpp"
 #include "core/time/gps_time.hpp"
 
 namespace navfuse::apps {
@@ -53,7 +54,7 @@ int run_aid(AidOptions& opt) {
     messages.push_back(make_aid_message(opt.spec));
   }
   lcm::LCM lcm(opt.lcm_url);
-  if (!lcm.good()) throw CommandError("cannot open LCM '" + (opt.lcm_url.empty() ? std::string("default") : opt.lcm_url) + "'");
+  require_lcm_open(lcm, opt.lcm_url);
   for (const auto& m : messages) {
     publish(lcm, m);
     if (opt.rate_hz > 0) std::this_thread::sleep_for(std::chrono::duration<double>(1.0 / opt.rate_hz));

@@ -1,12 +1,12 @@
 #include "apps/lcm/lcm_pose_writer.hpp"
 
-#include "apps/common/command_error.hpp"
+#include "apps/lcm/lcm_open.hpp"
 #include "apps/output/fe_pose_writer.hpp"
 
 namespace navfuse::apps {
 
 LcmPoseWriter::LcmPoseWriter(const std::string& url) : lcm_(url), publisher_(lcm_) {
-  if (!lcm_.good()) throw CommandError("--lcm: cannot open LCM '" + (url.empty() ? std::string("default") : url) + "'");
+  require_lcm_open(lcm_, url);
 }
 
 void LcmPoseWriter::on_pose(const PoseEpoch& epoch) {

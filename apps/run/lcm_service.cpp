@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "apps/common/command_error.hpp"
+#include "apps/lcm/lcm_open.hpp"
 #include "apps/run/run_log.hpp"
 
 namespace navfuse::apps {
@@ -26,7 +27,7 @@ LcmService::LcmService(const std::string& url, const Eigen::Matrix3d& c_vs, Meas
       latency_(latency),
       outbox_(kOutboxCapacity),
       wake_fd_(::eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC)) {
-  if (!lcm_.good()) throw CommandError("--lcm: cannot open LCM '" + (url.empty() ? std::string("default") : url) + "'");
+  require_lcm_open(lcm_, url);
   if (!wake_fd_) throw CommandError(std::string("--lcm: eventfd: ") + std::strerror(errno));
   subscriber_ = std::make_unique<LcmAidingSubscriber>(lcm_, [this](const Measurement& m) { on_aiding(m); });
   aiding_item_.source = kSourceLcmAiding;

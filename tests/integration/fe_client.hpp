@@ -20,6 +20,7 @@
 #include "frontends/fusionengine/messages_solution.hpp"
 #include "frontends/fusionengine/payload_reader.hpp"
 #include "frontends/fusionengine/writer.hpp"
+#include "tests/integration/test_paths.hpp"
 
 namespace navfuse::test {
 
@@ -33,21 +34,10 @@ class FeClient {
 
   // Connects to 127.0.0.1:port, retrying up to timeout_ms while the listener comes up.
   bool connect(std::uint16_t port, int timeout_ms) {
-    const io::Deadline deadline(timeout_ms);
-    while (!deadline.expired()) {
-      io::UniqueFd fd(::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0));
-      sockaddr_in a{};
-      a.sin_family = AF_INET;
-      a.sin_port = htons(port);
-      a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-      if (::connect(fd.get(), reinterpret_cast<const sockaddr*>(&a), sizeof a) == 0) {
-        fd_ = std::move(fd);
-        reader_ = std::thread([this] { read_loop(); });
-        return true;
-      }
-      ::poll(nullptr, 0, 20);
-    }
-    return false;
+    fd_ = connect_loopback(port, timeout_ms);
+    if (!fd_) return false;
+    reader_ = std::thread([this] { read_loop(); });
+    return true;
   }
   ~FeClient() {
     stop_ = true;

@@ -4,7 +4,6 @@
 #include <atomic>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -29,18 +28,6 @@ std::string demo_head(const std::filesystem::path& dir, std::size_t bytes) {
   in.read(head.data(), static_cast<std::streamsize>(bytes));
   head.resize(static_cast<std::size_t>(in.gcount()));
   return write_file(dir / "head.vnb", head);
-}
-
-std::vector<std::string> last_csv_row(const std::string& path) {
-  std::ifstream in(path);
-  std::string line, last;
-  while (std::getline(in, line)) {
-    if (!line.empty()) last = line;
-  }
-  std::vector<std::string> cells;
-  std::stringstream ss(last);
-  for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
-  return cells;
 }
 
 TEST(ReplayLcm, PosesArriveOnNavfusePoseWithTheCsvValues) {

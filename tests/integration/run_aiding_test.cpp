@@ -13,20 +13,18 @@
 #include <sys/stat.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <thread>
 
 #include <nlohmann/json.hpp>
 
-#include "core/bytes/byte_reader.hpp"
-#include "core/bytes/byte_writer.hpp"
 #include "core/io/unique_fd.hpp"
 #include "frontends/fusionengine/encoder.hpp"
 #include "frontends/mip/commands.hpp"
+#include "frontends/mip/decoder.hpp"
 #include "frontends/mip/framer.hpp"
 #include "frontends/mip/packet.hpp"
 #include "frontends/mip/packet_writer.hpp"
+#include "tests/frontends/mip/test_util.hpp"
 #include "tests/integration/child_process.hpp"
 #include "tests/integration/test_paths.hpp"
 
@@ -42,20 +40,8 @@ struct TruthEnd {
   double time_gps_s = 0, lat_deg = 0, lon_deg = 0, height_m = 0;
 };
 TruthEnd truth_end() {
-  std::ifstream in(demo("truth.csv"));
-  std::string line, last;
-  while (std::getline(in, line)) {
-    if (!line.empty()) last = line;
-  }
-  std::stringstream ss(last);
-  std::string cell;
-  TruthEnd t;
-  double* fields[] = {&t.time_gps_s, &t.lat_deg, &t.lon_deg, &t.height_m};
-  for (double* f : fields) {
-    std::getline(ss, cell, ',');
-    *f = std::stod(cell);
-  }
-  return t;
+  const auto row = last_csv_row(demo("truth.csv"));
+  return {std::stod(row.at(0)), std::stod(row.at(1)), std::stod(row.at(2)), std::stod(row.at(3))};
 }
 
 class RunAidingTest : public ::testing::Test {
@@ -94,52 +80,20 @@ void send_udp(std::uint16_t port, const std::vector<std::uint8_t>& bytes) {
             static_cast<ssize_t>(bytes.size()));
 }
 
-io::UniqueFd connect_tcp(std::uint16_t port) {
-  const io::Deadline deadline(kTimeoutMs);
-  while (!deadline.expired()) {
-    io::UniqueFd fd(::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0));
-    sockaddr_in a{};
-    a.sin_family = AF_INET;
-    a.sin_port = htons(port);
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    if (::connect(fd.get(), reinterpret_cast<const sockaddr*>(&a), sizeof a) == 0) return fd;
-    ::poll(nullptr, 0, 20);
-  }
-  return io::UniqueFd();
-}
-
-// 0x13,0x22 LLH position aiding (digest §5.1: Time{timebase, reserved, u64 ns}, frame id,
-// lat/lon/height f64, std f32 x3, valid u16).
+// A (0x13,0x22) LLH position aiding command at the drive's end position, all axes valid.
 std::vector<std::uint8_t> llh_aiding(std::uint8_t timebase, std::uint64_t ns, const TruthEnd& p, double std_m) {
-  std::vector<std::uint8_t> d;
-  bytes::BeWriter w(d);
-  w.u8(timebase);
-  w.u8(1);
-  w.u64(ns);
-  w.u8(0);  // frame 0: the vehicle frame
-  w.f64(p.lat_deg);
-  w.f64(p.lon_deg);
-  w.f64(p.height_m);
-  for (int i = 0; i < 3; ++i) w.f32(static_cast<float>(std_m));
-  w.u16(0x7);
-  return frontends::mip::make_packet(0x13, 0x22, d);
+  return frontends::mip::make_packet(
+      0x13, 0x22,
+      frontends::mip::test::llh_meas(ns, 0, p.lat_deg, p.lon_deg, p.height_m, Eigen::Vector3d::Constant(std_m), 0x7, timebase));
 }
 
-// GPS time (ns) of the newest MIP 0x82 packet carrying field 0xD3 (GPS timestamp: tow f64,
-// week u16, valid u16; spec §6.2) in `packet`, if any.
-std::optional<std::int64_t> filter_gps_ns(const frontends::mip::PacketView& packet) {
-  if (packet.desc_set != 0x82) return std::nullopt;
-  frontends::mip::FieldWalker walk(packet.payload);
-  frontends::mip::FieldView f;
-  while (walk.next(f)) {
-    if (f.desc != 0xD3 || f.data.size() < 10) continue;
-    bytes::BeReader r(f.data);
-    const double tow_s = r.f64();
-    const std::uint16_t week = r.u16();
-    return static_cast<std::int64_t>(week) * 604800'000'000'000LL + std::llround(tow_s * 1e9);
+// The newest solution time in the 0x82 stream, through the MIP front-end's own decoder.
+struct SolutionTimeSink final : frontends::DecodeSink {
+  std::int64_t latest_ns = 0;
+  void on_measurement(const Measurement& m) override {
+    if (kind_of(m) == MeasurementKind::kDeviceSolution) latest_ns = std::max(latest_ns, header_of(m).time_ns);
   }
-  return std::nullopt;
-}
+};
 
 TEST_F(RunAidingTest, MipAidingOnTheOutputLinkIsAcknowledgedAndFused) {
   // The VN-300 log comes through a FIFO, written once the MIP client is connected, so the test
@@ -155,7 +109,7 @@ TEST_F(RunAidingTest, MipAidingOnTheOutputLinkIsAcknowledgedAndFused) {
   io::UniqueFd writer(::open(fifo.c_str(), O_WRONLY | O_CLOEXEC));  // meets the process's open()
   ASSERT_TRUE(static_cast<bool>(writer));
   ASSERT_TRUE(nav.wait_for_output("running", kTimeoutMs)) << nav.output();
-  io::UniqueFd link = connect_tcp(mip_port);
+  io::UniqueFd link = connect_loopback(mip_port, kTimeoutMs);
   ASSERT_TRUE(static_cast<bool>(link));
   // Written from a second thread while this one keeps the link drained (a client that stops
   // reading is a slow consumer, whose data the process drops rather than wait for), at about
@@ -175,8 +129,10 @@ TEST_F(RunAidingTest, MipAidingOnTheOutputLinkIsAcknowledgedAndFused) {
   const TruthEnd end = truth_end();
   const auto end_ns = static_cast<std::int64_t>(std::llround(end.time_gps_s * 1e9));
   frontends::mip::Framer framer;
+  frontends::mip::MipDecoder decoder;
+  SolutionTimeSink solutions;
   std::vector<frontends::mip::ReplyEntry> acks;
-  std::int64_t filter_ns = 0;
+  const std::int64_t& filter_ns = solutions.latest_ns;
   // Reads the link until `done()`: 0x82 times and 0x13 replies (interleaved in any order).
   auto read_until = [&](auto done) {
     const io::Deadline deadline(kTimeoutMs);
@@ -187,7 +143,7 @@ TEST_F(RunAidingTest, MipAidingOnTheOutputLinkIsAcknowledgedAndFused) {
       const ssize_t n = ::read(link.get(), buf, sizeof buf);
       if (n <= 0) return;
       framer.feed(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), [&](const frontends::mip::PacketView& pkt) {
-        if (const auto t = filter_gps_ns(pkt)) filter_ns = std::max(filter_ns, *t);
+        if (pkt.desc_set == 0x82) decoder.on_packet(pkt, solutions);
         std::vector<frontends::mip::ReplyEntry> entries;
         if (pkt.desc_set == 0x13 && frontends::mip::parse_reply(pkt.payload, entries)) {
           acks.insert(acks.end(), entries.begin(), entries.end());

@@ -10,9 +10,13 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
+
+#include "core/io/unique_fd.hpp"
 
 namespace navfuse::test {
 
@@ -53,6 +57,35 @@ inline std::uint16_t free_port(int type) {
   ::getsockname(fd, reinterpret_cast<sockaddr*>(&a), &len);
   ::close(fd);
   return ntohs(a.sin_port);
+}
+
+// A TCP connection to 127.0.0.1:port, retried up to timeout_ms while the listener comes up;
+// an empty fd when none was made.
+inline io::UniqueFd connect_loopback(std::uint16_t port, int timeout_ms) {
+  const io::Deadline deadline(timeout_ms);
+  while (!deadline.expired()) {
+    io::UniqueFd fd(::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0));
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_port = htons(port);
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (::connect(fd.get(), reinterpret_cast<const sockaddr*>(&a), sizeof a) == 0) return fd;
+    ::usleep(20'000);
+  }
+  return io::UniqueFd();
+}
+
+// The cells of the last non-empty line of a CSV file (no quoting: navfuse's CSVs have none).
+inline std::vector<std::string> last_csv_row(const std::string& path) {
+  std::ifstream in(path);
+  std::string line, last;
+  while (std::getline(in, line)) {
+    if (!line.empty()) last = line;
+  }
+  std::vector<std::string> cells;
+  std::stringstream ss(last);
+  for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+  return cells;
 }
 
 }  // namespace navfuse::test

@@ -45,19 +45,11 @@ std::vector<std::uint8_t> frame_quat(std::uint8_t id, Eigen::Vector3d t, Eigen::
   return d;
 }
 
-// Time{timebase 2 external = GPS ns, reserved 1, ns}, frame id.
-void head(bytes::BeWriter& w, std::uint64_t ns, std::uint8_t frame) {
-  w.u8(2);
-  w.u8(1);
-  w.u64(ns);
-  w.u8(frame);
-}
-
 std::vector<std::uint8_t> vec_meas(std::uint64_t ns, std::uint8_t frame, Eigen::Vector3d v, Eigen::Vector3d s,
                                    std::uint16_t valid) {
   std::vector<std::uint8_t> d;
   bytes::BeWriter w(d);
-  head(w, ns, frame);
+  test::aiding_head(w, ns, frame);
   for (int i = 0; i < 3; ++i) w.f32(static_cast<float>(v[i]));
   for (int i = 0; i < 3; ++i) w.f32(static_cast<float>(s[i]));
   w.u16(valid);
@@ -67,22 +59,9 @@ std::vector<std::uint8_t> vec_meas(std::uint64_t ns, std::uint8_t frame, Eigen::
 std::vector<std::uint8_t> scalar_meas(std::uint64_t ns, std::uint8_t frame, double v, double s, std::uint16_t valid) {
   std::vector<std::uint8_t> d;
   bytes::BeWriter w(d);
-  head(w, ns, frame);
+  test::aiding_head(w, ns, frame);
   w.f32(static_cast<float>(v));
   w.f32(static_cast<float>(s));
-  w.u16(valid);
-  return d;
-}
-
-std::vector<std::uint8_t> llh_meas(std::uint64_t ns, std::uint8_t frame, double lat_deg, double lon_deg, double h,
-                                   Eigen::Vector3d s, std::uint16_t valid) {
-  std::vector<std::uint8_t> d;
-  bytes::BeWriter w(d);
-  head(w, ns, frame);
-  w.f64(lat_deg);
-  w.f64(lon_deg);
-  w.f64(h);
-  for (int i = 0; i < 3; ++i) w.f32(static_cast<float>(s[i]));
   w.u16(valid);
   return d;
 }
@@ -156,7 +135,7 @@ TEST(MipAiding, FrameConfigsGiveHandComputedVehicleFrameMeasurements) {
   EXPECT_NEAR(m.field_gauss.z(), 0.4, 1e-6);
 
   // LLH position from frame 2's antenna: degrees -> radians, lever arm = translation.
-  r = send(h, 0x22, llh_meas(4, 2, 45.0, -122.5, 100.0, {1, 1, 2}, 0x7));
+  r = send(h, 0x22, test::llh_meas(4, 2, 45.0, -122.5, 100.0, {1, 1, 2}, 0x7));
   ASSERT_EQ(r.measurements.size(), 1u);
   const auto& p = std::get<ExternalPosition>(r.measurements[0]);
   EXPECT_NEAR(p.value.x(), 45.0 * kPi / 180, 1e-15);
@@ -164,7 +143,7 @@ TEST(MipAiding, FrameConfigsGiveHandComputedVehicleFrameMeasurements) {
   EXPECT_NEAR(p.lever_arm_m.z(), -0.4, 1e-7);
 
   // Height only (lat/lon invalid, L765): one valid axis.
-  r = send(h, 0x22, llh_meas(4, 0, 0, 0, 55.0, {0, 0, 2}, 0x4));
+  r = send(h, 0x22, test::llh_meas(4, 0, 0, 0, 55.0, {0, 0, 2}, 0x4));
   ASSERT_EQ(r.measurements.size(), 1u);
   EXPECT_EQ(std::get<ExternalPosition>(r.measurements[0]).header.valid, ExternalPosition::kValidZ);
 

@@ -8,6 +8,9 @@
 #include <string_view>
 #include <vector>
 
+#include <Eigen/Core>
+
+#include "core/bytes/byte_writer.hpp"
 #include "frontends/common/stream_decoder.hpp"
 
 namespace navfuse::frontends::mip::test {
@@ -29,6 +32,29 @@ inline std::vector<std::uint8_t> hex(std::string_view s) {
     }
   }
   return out;
+}
+
+// The head of every 0x13 aiding measurement (digest §5.1): Time{u8 timebase, u8 reserved,
+// u64 ns}, then u8 frame id. Timebase 2 = external time (GPS ns), 3 = time of arrival.
+inline void aiding_head(bytes::BeWriter& w, std::uint64_t ns, std::uint8_t frame, std::uint8_t timebase = 2) {
+  w.u8(timebase);
+  w.u8(1);
+  w.u64(ns);
+  w.u8(frame);
+}
+
+// (0x13,0x22) LLH position aiding data: head, lat/lon/height f64, std f32 x3, valid u16.
+inline std::vector<std::uint8_t> llh_meas(std::uint64_t ns, std::uint8_t frame, double lat_deg, double lon_deg,
+                                          double h, Eigen::Vector3d s, std::uint16_t valid, std::uint8_t timebase = 2) {
+  std::vector<std::uint8_t> d;
+  bytes::BeWriter w(d);
+  aiding_head(w, ns, frame, timebase);
+  w.f64(lat_deg);
+  w.f64(lon_deg);
+  w.f64(h);
+  for (int i = 0; i < 3; ++i) w.f32(static_cast<float>(s[i]));
+  w.u16(valid);
+  return d;
 }
 
 struct CollectingSink : DecodeSink {
