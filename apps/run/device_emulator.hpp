@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "apps/run/engine_action.hpp"
-#include "apps/run/output_epoch.hpp"
+#include "apps/fusion/output_epoch.hpp"
 #include "core/io/transport.hpp"
 #include "core/measurements/measurements.hpp"
 

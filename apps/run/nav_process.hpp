@@ -27,7 +27,7 @@
 #include "apps/run/input_reader.hpp"
 #include "apps/run/latency_tracker.hpp"
 #include "apps/run/lcm_service.hpp"
-#include "apps/run/output_epoch.hpp"
+#include "apps/fusion/output_epoch.hpp"
 #include "apps/run/output_sink.hpp"
 #include "apps/run/run_options.hpp"
 #include "apps/run/status_reporter.hpp"

@@ -18,7 +18,7 @@
 #include "apps/run/arrived_measurement.hpp"
 #include "apps/run/device_emulator.hpp"
 #include "apps/run/engine_action.hpp"
-#include "apps/run/output_epoch.hpp"
+#include "apps/fusion/output_epoch.hpp"
 #include "core/io/transport.hpp"
 #include "core/io/uri.hpp"
 

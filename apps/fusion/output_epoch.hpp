@@ -1,0 +1,21 @@
+// What the fusion runner (apps/fusion/fusion_runner) hands every output after each IMU sample the
+// filter processed: the one record behind every output of `replay`, `bench` and `run` (files,
+// device-emulating links, LCM). Each output decides from it what to send when.
+#pragma once
+
+#include <cstdint>
+
+#include "core/measurements/measurements.hpp"
+
+namespace navfuse::apps {
+
+struct OutputEpoch {
+  NavSolution solution;                // the filter's solution at this IMU sample
+  bool pose_due = false;               // output.rate_hz says a pose goes out at this epoch
+  bool gnss_updated = false;           // pose_due, and a GNSS position was fused since the last pose
+  std::uint64_t gnss_fused_total = 0;  // running count of fused GNSS positions
+  std::uint8_t num_sats = 0;           // of the newest GNSS fix (0: unknown)
+  std::int64_t arrival_ns = 0;         // host monotonic time the IMU sample arrived (run; 0 in replay)
+};
+
+}  // namespace navfuse::apps
