@@ -65,6 +65,8 @@ class Engine {
   bool solution_valid() const;
   std::uint64_t imu_epoch() const { return imu_epoch_; }
   const FilterStats& stats() const;
+  // Measurements of `kind` used so far (cheap: stats() copies the whole table).
+  std::uint64_t used(MeasurementKind kind) const { return stats_.of(kind).used; }
   const FilterOptions& options() const { return options_; }
 
   void reset(std::uint32_t mask);

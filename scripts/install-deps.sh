@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  cmake ninja-build g++ make pkg-config ccache
+  cmake ninja-build g++ make pkg-config ccache time   # time: tests/bench/replay_throughput.sh
   clang libclang-rt-14-dev            # libFuzzer targets and the sanitizer build
   libeigen3-dev libgeographiclib-dev libceres-dev
   liblcm-dev liblcm-bin libglib2.0-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev

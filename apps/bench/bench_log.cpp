@@ -4,9 +4,9 @@
 
 #include "apps/common/command_error.hpp"
 #include "apps/common/input_spec.hpp"
-#include "apps/output/output_rate.hpp"
-#include "apps/replay/fusion_pipeline.hpp"
-#include "apps/replay/measurement_merger.hpp"
+#include "apps/fusion/fusion_runner.hpp"
+#include "apps/fusion/log_fusion.hpp"
+#include "apps/fusion/measurement_merger.hpp"
 #include "apps/replay/replay.hpp"
 #include "filter/engine.hpp"
 
@@ -29,11 +29,10 @@ std::string input_name(const std::vector<InputSpec>& specs, std::size_t i) {
 
 // Bench's use of the stream: the device's own solution (from whichever clock, checked after the
 // run), the GNSS fix times, and navfuse's poses at the output rate, exactly as replay writes them.
-class BenchObserver final : public PipelineObserver {
+class BenchObserver final : public FusionObserver {
  public:
-  BenchObserver(BenchLog& log, const std::vector<InputSpec>& specs, double rate_hz)
-      : log_(log), specs_(specs), rate_(rate_hz) {}
-  void on_merged(const Measurement& m) override {
+  BenchObserver(BenchLog& log, const std::vector<InputSpec>& specs) : log_(log), specs_(specs) {}
+  void on_offered(const Measurement& m) override {
     if (kind_of(m) != MeasurementKind::kDeviceSolution) return;
     const MeasurementHeader& header = header_of(m);
     if (!device_header) {
@@ -52,16 +51,14 @@ class BenchObserver final : public PipelineObserver {
       log_.gnss_fix_times_ns.push_back(header_of(m).time_ns);
     }
   }
-  void on_imu_epoch(const filter::Engine& engine) override {
-    const NavSolution& s = engine.solution();
-    if (rate_.due(s.header.time_ns)) log_.navfuse.append(track_sample_from(s));
+  void on_epoch(const OutputEpoch& epoch, const filter::Engine&) override {
+    if (epoch.pose_due) log_.navfuse.append(track_sample_from(epoch.solution));
   }
   std::optional<MeasurementHeader> device_header;
 
  private:
   BenchLog& log_;
   const std::vector<InputSpec>& specs_;
-  OutputRate rate_;
 };
 
 }  // namespace
@@ -73,21 +70,21 @@ BenchLog collect_bench_log(const BenchLogOptions& options) {
   const config::Config config = replay_config(options.config_path, specs.front().frontend->format);
 
   MeasurementMerger merger(specs, {.chunk_bytes = 16 * 1024, .allow_truncated = options.allow_truncated});
-  filter::Engine engine(filter::options_from_config(config));
-
   BenchLog log;
   log.output_rate_hz = config.output.rate_hz;
-  BenchObserver observer(log, specs, config.output.rate_hz);
-  PipelineResult run = run_fusion_pipeline(
-      merger, engine, {.progress_bar = options.progress, .progress_lines_label = options.progress ? "navfuse bench" : nullptr},
-      observer);
-  const std::optional<MeasurementHeader>& imu_header = run.first_imu;
+  BenchObserver observer(log, specs);
+  FusionRunner runner(filter::options_from_config(config),
+                      {.output_rate_hz = config.output.rate_hz, .solutions = FusionRunner::Solutions::kPoses}, observer);
+  log.summary = fuse_log(
+      merger, runner, observer,
+      {.progress_bar = options.progress, .progress_lines_label = options.progress ? "navfuse bench" : nullptr});
+  const std::optional<MeasurementHeader>& imu_header = runner.first_imu();
   const std::optional<MeasurementHeader>& device_header = observer.device_header;
   if (imu_header) {
     log.start_ns = imu_header->time_ns;
-    log.end_ns = run.last_imu_ns;
+    log.end_ns = runner.last_imu_ns();
   }
-  log.imu_samples = run.imu_samples;
+  log.imu_samples = runner.imu_samples();
 
   if (!imu_header) {
     std::string names;
@@ -103,8 +100,6 @@ BenchLog collect_bench_log(const BenchLogOptions& options) {
                        std::string(to_string(imu_header->time_source)) + "; the two cannot be aligned");
   }
   std::sort(log.gnss_fix_times_ns.begin(), log.gnss_fix_times_ns.end());
-
-  log.summary = std::move(run.summary);
   return log;
 }
 

@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "apps/fusion/output_epoch.hpp"
 #include "apps/output/pose_outputs.hpp"
 
 namespace navfuse::apps {
@@ -33,6 +34,7 @@ class PoseOutputThread {
   // One IMU epoch: PoseOutputs::on_imu(s), then on_pose(...) when `pose_due`. Rethrows (as
   // CommandError) a write error the thread met.
   void post(const NavSolution& s, bool pose_due, std::uint64_t gnss_fused_total, std::uint8_t num_sats);
+  void post(const OutputEpoch& e) { post(e.solution, e.pose_due, e.gnss_fused_total, e.num_sats); }
   // Writes everything posted, stops the thread and rethrows a write error if there was one.
   // The writers are then ready for PoseOutputs::commit() on this thread.
   void finish();

@@ -10,11 +10,11 @@
 #include "apps/output/csv_pose_writer.hpp"
 #include "apps/output/fe_pose_writer.hpp"
 #include "apps/output/mip_pose_writer.hpp"
-#include "apps/output/output_rate.hpp"
 #include "apps/output/pose_output_thread.hpp"
 #include "apps/output/pose_outputs.hpp"
-#include "apps/replay/fusion_pipeline.hpp"
-#include "apps/replay/measurement_merger.hpp"
+#include "apps/fusion/fusion_runner.hpp"
+#include "apps/fusion/log_fusion.hpp"
+#include "apps/fusion/measurement_merger.hpp"
 #include "apps/replay/truth_accuracy.hpp"
 #include "filter/engine.hpp"
 
@@ -29,38 +29,31 @@ config::DeviceProfile profile_for_format(std::string_view format) {
   return config::DeviceProfile::kGeneric;
 }
 
-// Replay's use of the stream: every solution to the writers (IMU output), and at the output
-// rate a pose (FusionEngine / MIP / CSV) and a truth comparison. The writers run on their own
-// thread (PoseOutputThread); the truth comparison is cheap and stays here.
-class ReplayObserver final : public PipelineObserver {
+// Replay's use of the stream: every epoch to the writers (IMU output), and at the output rate
+// a pose (FusionEngine / MIP / CSV) and a truth comparison. The writers run on their own thread
+// (PoseOutputThread); the truth comparison is cheap and stays here.
+class ReplayObserver final : public FusionObserver {
  public:
-  ReplayObserver(PoseOutputs& outputs, TruthAccuracy* accuracy, double rate_hz)
-      : accuracy_(accuracy), rate_(rate_hz) {
+  ReplayObserver(PoseOutputs& outputs, TruthAccuracy* accuracy) : accuracy_(accuracy) {
     if (!outputs.empty()) writer_.emplace(outputs);
   }
-  void on_fused(const Measurement& m) override {
-    if (kind_of(m) == MeasurementKind::kGnssPosition) num_sats_ = std::get<GnssPosition>(m).num_sats;
+  // What the observer needs filled: writers see every epoch, truth only poses.
+  FusionRunner::Solutions solutions() const {
+    if (writer_) return FusionRunner::Solutions::kEvery;
+    return accuracy_ ? FusionRunner::Solutions::kPoses : FusionRunner::Solutions::kNone;
   }
-  void on_imu_epoch(const filter::Engine& engine) override {
-    if (!writer_ && accuracy_ == nullptr) return;
-    const NavSolution& s = engine.solution();
-    const bool pose_due = rate_.due(s.header.time_ns);
-    if (writer_) writer_->post(s, pose_due, engine.stats().of(MeasurementKind::kGnssPosition).used, num_sats_);
-    if (!pose_due) return;
-    ++poses;
-    if (accuracy_) accuracy_->add(s);
+  void on_epoch(const OutputEpoch& epoch, const filter::Engine&) override {
+    if (writer_) writer_->post(epoch);
+    if (accuracy_ && epoch.pose_due) accuracy_->add(epoch.solution);
   }
   // Inside the timed run: the summary's rate includes writing the last epochs.
   void on_finished() override {
     if (writer_) writer_->finish();
   }
-  std::uint64_t poses = 0;
 
  private:
   TruthAccuracy* accuracy_;
-  OutputRate rate_;
   std::optional<PoseOutputThread> writer_;
-  std::uint8_t num_sats_ = 0;
 };
 
 }  // namespace
@@ -97,15 +90,15 @@ ReplayResult run_replay(const ReplayOptions& options) {
     outputs.add(std::move(writer));
   }
 
-  filter::Engine engine(filter::options_from_config(config));
-  ReplayObserver observer(outputs, accuracy.get(), rate_hz);
-  PipelineResult run = run_fusion_pipeline(merger, engine, {.progress_bar = options.progress}, observer);
+  ReplayObserver observer(outputs, accuracy.get());
+  FusionRunner runner(filter::options_from_config(config),
+                      {.output_rate_hz = rate_hz, .solutions = observer.solutions()}, observer);
+  ReplayResult result;
+  result.summary = fuse_log(merger, runner, observer, {.progress_bar = options.progress});
   outputs.commit();
 
-  ReplayResult result;
-  result.imu_samples = run.imu_samples;
-  result.poses = observer.poses;
-  result.summary = std::move(run.summary);
+  result.imu_samples = runner.imu_samples();
+  result.poses = runner.poses();
   Summary& summary = result.summary;
   summary.extra["output"] = {{"rate_hz", rate_hz}, {"poses", result.poses}};
   if (lcm) summary.extra["lcm"] = {{"published", lcm->published()}, {"failures", lcm->failures()}};

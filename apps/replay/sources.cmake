@@ -1,9 +1,6 @@
 # apps/replay: `navfuse replay` (input merge, filter run, pose outputs, accuracy against truth).
 target_sources(navfuse_apps PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/error_stats.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/fusion_pipeline.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/measurement_merger.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/progress_bar.cpp
   ${CMAKE_CURRENT_LIST_DIR}/replay.cpp
   ${CMAKE_CURRENT_LIST_DIR}/replay_command.cpp
   ${CMAKE_CURRENT_LIST_DIR}/truth_accuracy.cpp

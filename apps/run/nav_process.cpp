@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "apps/common/command_error.hpp"
+#include "apps/output/fe_pose_writer.hpp"
 #include "apps/run/fe_device_emulator.hpp"
 #include "apps/run/mip_device_emulator.hpp"
 #include "apps/run/run_log.hpp"
@@ -40,11 +41,13 @@ NavProcess::NavProcess(const RunOptions& options)
     : options_(options),
       config_(load_config(options.config_path)),
       queue_(kQueueCapacity),
-      actions_(kActionQueueCapacity),
-      rate_(config_.output.rate_hz) {
+      actions_(kActionQueueCapacity) {
   if (options_.inputs.empty()) throw CommandError("run needs at least one --in URI");
   if (!(options_.status_interval_s > 0)) throw CommandError("--status-interval must be > 0 s");
-  engine_ = std::make_unique<filter::Engine>(filter::options_from_config(config_));
+  runner_ = std::make_unique<FusionRunner>(
+      filter::options_from_config(config_),
+      FusionRunner::Options{.output_rate_hz = config_.output.rate_hz, .solutions = FusionRunner::Solutions::kEvery},
+      static_cast<FusionObserver&>(*this));
 
   // Parse every argument before opening anything: a typo in the last --in is reported without
   // first grabbing serial ports and sockets for the others.
@@ -111,7 +114,7 @@ void NavProcess::filter_loop() {
   for (;;) {
     const bool got = queue_.pop_wait(item_, kFilterWait);
     apply_actions();
-    if (got) process(item_);
+    if (got) runner_->offer(item_.measurement, item_.arrival_ns);
     if (monotonic_ns() >= next_status_ns_) report_status();
     if (got) continue;
     // Nothing queued: done when told to stop, or when every input has ended (an input marks
@@ -125,32 +128,17 @@ void NavProcess::filter_loop() {
   report_status();  // the final state, for whoever watches NAVFUSE_STATUS
 }
 
-void NavProcess::process(const ArrivedMeasurement& item) {
-  const Measurement& m = item.measurement;
-  const auto kind = kind_of(m);
-  ++counts_.decoded[static_cast<std::size_t>(kind)];
-  if (const auto reason = gate_.check(m)) {
-    counts_.count_gated(kind, *reason);
-    ++time_base_total_;
-    return;
-  }
+void NavProcess::on_fused(const Measurement& m) {
   if (lcm_) track_gnss(m);
-  if (kind == MeasurementKind::kGnssPosition) num_sats_ = std::get<GnssPosition>(m).num_sats;
-  engine_->process(m);
-  if (kind == MeasurementKind::kImu) after_imu(item);
 }
 
-void NavProcess::after_imu(const ArrivedMeasurement& item) {
-  ++imu_samples_;
-  if (lcm_) lcm_->post_imu(std::get<ImuSample>(item.measurement));
-  if (engine_->imu_epoch() == last_epoch_) return;  // the filter did not advance (rejected sample)
-  last_epoch_ = engine_->imu_epoch();
-  epoch_.solution = engine_->solution();
-  epoch_.pose_due = rate_.due(epoch_.solution.header.time_ns);
-  epoch_.gnss_fused_total = engine_->stats().of(MeasurementKind::kGnssPosition).used;
-  epoch_.num_sats = num_sats_;
-  for (auto& out : outputs_) out->post(epoch_);
-  if (lcm_ && epoch_.pose_due) lcm_->post_pose(epoch_.solution, item.arrival_ns);
+void NavProcess::on_epoch(const OutputEpoch& epoch, const filter::Engine&) {
+  for (auto& out : outputs_) out->post(epoch);
+  if (lcm_ && epoch.pose_due) {
+    // NAVFUSE_IMU: the filter's compensated IMU with each pose (core/lcm/imu_t.lcm), as replay.
+    if (compensated_imu_from(epoch.solution, lcm_imu_)) lcm_->post_imu(lcm_imu_);
+    lcm_->post_pose(epoch.solution, epoch.arrival_ns);
+  }
 }
 
 void NavProcess::track_gnss(const Measurement& m) {
@@ -172,12 +160,12 @@ void NavProcess::apply_actions() {
   while (actions_.try_pop(a)) {
     switch (a.kind) {
       case EngineAction::Kind::kReset:
-        engine_->reset(a.reset_mask);
+        runner_->engine().reset(a.reset_mask);
         log_event("filter reset by command (mask " + std::to_string(a.reset_mask) + ")");
         break;
-      case EngineAction::Kind::kGnssLeverArm: engine_->set_gnss_lever_arm(a.vector, a.antenna); break;
-      case EngineAction::Kind::kMounting: engine_->set_mounting(a.vector); break;
-      case EngineAction::Kind::kWheelLeverArm: engine_->set_wheel_lever_arm(a.vector); break;
+      case EngineAction::Kind::kGnssLeverArm: runner_->engine().set_gnss_lever_arm(a.vector, a.antenna); break;
+      case EngineAction::Kind::kMounting: runner_->engine().set_mounting(a.vector); break;
+      case EngineAction::Kind::kWheelLeverArm: runner_->engine().set_wheel_lever_arm(a.vector); break;
     }
   }
 }
@@ -194,7 +182,8 @@ void NavProcess::report_status() {
   queue_full += lcm_->aiding_dropped();
   std::uint64_t output_drops = lcm_->dropped();
   for (const auto& out : outputs_) output_drops += out->drops();
-  const StatusInputs in{engine_->solution(), engine_->stats(), snapshots_, queue_full, time_base_total_,
+  const filter::Engine& engine = runner_->engine();
+  const StatusInputs in{engine.solution(), engine.stats(), snapshots_, queue_full, runner_->gated_total(),
                         output_drops, latency_.take_window()};
   lcm_->post_status(status_.make(in, now));
 }
@@ -211,13 +200,8 @@ Summary NavProcess::summary() const {
     is.counters.bad_frames = c.bad_frames;
     s.inputs.push_back(std::move(is));
   }
-  fill_measurement_counts(engine_->stats(), counts_, s);
-  RunStats run;
   const std::int64_t end_ns = stopped_ns_ > 0 ? stopped_ns_ : monotonic_ns();
-  run.wall_s = started_ns_ > 0 ? static_cast<double>(end_ns - started_ns_) * 1e-9 : 0.0;
-  run.imu_samples_per_s = run.wall_s > 0 ? static_cast<double>(imu_samples_) / run.wall_s : 0.0;
-  for (NavMode mode : engine_->modes_reached()) run.modes_reached.emplace_back(to_string(mode));
-  s.run = run;
+  runner_->fill_summary(s, started_ns_ > 0 ? static_cast<double>(end_ns - started_ns_) * 1e-9 : 0.0);
   return s;
 }
 

@@ -18,16 +18,13 @@
 #include <thread>
 #include <vector>
 
-#include "apps/common/measurement_counts.hpp"
 #include "apps/common/summary.hpp"
-#include "apps/output/output_rate.hpp"
-#include "apps/replay/time_base_gate.hpp"
+#include "apps/fusion/fusion_runner.hpp"
 #include "apps/run/arrived_measurement.hpp"
 #include "apps/run/engine_action.hpp"
 #include "apps/run/input_reader.hpp"
 #include "apps/run/latency_tracker.hpp"
 #include "apps/run/lcm_service.hpp"
-#include "apps/fusion/output_epoch.hpp"
 #include "apps/run/output_sink.hpp"
 #include "apps/run/run_options.hpp"
 #include "apps/run/status_reporter.hpp"
@@ -36,7 +33,7 @@
 
 namespace navfuse::apps {
 
-class NavProcess {
+class NavProcess final : private FusionObserver {
  public:
   // Loads the configuration and opens every input, output and LCM, so that any bad argument
   // (unknown format, bad URI, missing file or device, bad config key) is a one-line
@@ -56,8 +53,9 @@ class NavProcess {
 
  private:
   void filter_loop();
-  void process(const ArrivedMeasurement& item);
-  void after_imu(const ArrivedMeasurement& item);
+  // FusionObserver: the runner's fused measurements and epochs go to the outputs and LCM.
+  void on_fused(const Measurement& m) override;
+  void on_epoch(const OutputEpoch& epoch, const filter::Engine& engine) override;
   void track_gnss(const Measurement& m);
   void apply_actions();
   void report_status();
@@ -65,7 +63,7 @@ class NavProcess {
 
   RunOptions options_;
   config::Config config_;
-  std::unique_ptr<filter::Engine> engine_;
+  std::unique_ptr<FusionRunner> runner_;  // the filter thread's only way to the engine
   MeasurementQueue queue_;
   EngineActionQueue actions_;
   LatencyTracker latency_;
@@ -74,20 +72,13 @@ class NavProcess {
   std::unique_ptr<LcmService> lcm_;
 
   // Filter thread state.
-  TimeBaseGate gate_;
-  OutputRate rate_;
   StatusReporter status_;
   ArrivedMeasurement item_;
-  OutputEpoch epoch_;
   std::vector<InputSnapshot> snapshots_;
-  std::uint64_t last_epoch_ = 0;
-  std::uint8_t num_sats_ = 0;
   GnssPosition pending_fix_;  // waiting for the velocity of the same epoch (NAVFUSE_GNSS)
   bool fix_pending_ = false;
+  ImuSample lcm_imu_;  // reused: no allocation per epoch
   std::int64_t next_status_ns_ = 0;
-  MeasurementCounts counts_;       // decoded, and kept from the filter by gate_ (by reason)
-  std::uint64_t time_base_total_ = 0;  // everything gate_ rejected, for NAVFUSE_STATUS
-  std::uint64_t imu_samples_ = 0;
   std::int64_t started_ns_ = 0;
   std::int64_t stopped_ns_ = 0;
 

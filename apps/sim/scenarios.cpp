@@ -93,9 +93,19 @@ TrajectorySpec short_drive() {
   return t;
 }
 
+// The reference drive's first 540 s (up to the turn that ends at 506 s, then 34 s of the 20 m/s
+// cruise): the 9-minute log of the replay throughput benchmark (tests/bench/replay_throughput.sh).
+TrajectorySpec nine_minute_drive() {
+  TrajectorySpec t = reference_drive();
+  constexpr std::size_t kSegmentsTo506s = 22;
+  t.segments.resize(kSegmentsTo506s);
+  t.segments.push_back(Seg::cruise(34.0));
+  return t;
+}
+
 std::vector<std::string_view> scenario_names() {
-  return {"static_start", "drive_outage", "rtk_drive", "drive_short",
-          "delayed_gnss", "outliers",     "dual_antenna"};
+  return {"static_start", "drive_outage", "rtk_drive",    "drive_short",
+          "delayed_gnss", "outliers",     "dual_antenna", "drive_9min"};
 }
 
 std::optional<Scenario> find_scenario(std::string_view name) {
@@ -140,6 +150,7 @@ std::optional<Scenario> find_scenario(std::string_view name) {
     s.gnss.secondary_lever_arm_m = s.gnss.lever_arm_m + Eigen::Vector3d(-1.5, 0.0, 0.0);
     return s;
   }
+  if (name == "drive_9min") return base_scenario("drive_9min", nine_minute_drive());
   return std::nullopt;
 }
 

@@ -13,6 +13,7 @@
 //   outliers      drive_outage's drive with 2 % of fixes displaced 50 m and a 30 m permanent jump
 //                 at t = 900 s, no outage.
 //   dual_antenna  drive_short with a 1.5 m dual-antenna baseline heading.
+//   drive_9min    the first 540 s of the reference drive, GNSS throughout (replay throughput benchmark).
 #pragma once
 
 #include <optional>

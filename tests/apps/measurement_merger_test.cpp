@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "apps/common/command_error.hpp"
-#include "apps/replay/measurement_merger.hpp"
+#include "apps/fusion/measurement_merger.hpp"
 #include "frontends/fusionengine/frontend.hpp"
 #include "test_files.hpp"
 

@@ -6,7 +6,7 @@
 
 #include "apps/common/command_error.hpp"
 #include "apps/replay/error_stats.hpp"
-#include "apps/replay/time_base_gate.hpp"
+#include "apps/fusion/time_base_gate.hpp"
 #include "apps/replay/truth_accuracy.hpp"
 #include "apps/replay/truth_track.hpp"
 #include "core/rotation/rotation.hpp"

@@ -1,4 +1,4 @@
-#include "apps/replay/measurement_merger.hpp"
+#include "apps/fusion/measurement_merger.hpp"
 
 #include <cerrno>
 #include <cstring>

@@ -1,4 +1,4 @@
-#include "apps/common/measurement_counts.hpp"
+#include "apps/fusion/measurement_counts.hpp"
 
 namespace navfuse::apps {
 

@@ -1,5 +1,5 @@
 // Per-kind measurement counts an app keeps beside the filter's own: how many were decoded, and
-// how many its time-base gate (apps/replay/time_base_gate.hpp) kept from the filter, by reason.
+// how many its time-base gate (apps/fusion/time_base_gate.hpp) kept from the filter, by reason.
 // fill_measurement_counts() merges them with the filter's used / rejected-by-reason into the run
 // Summary, the same way for `navfuse replay`, `bench` and `run`.
 #pragma once

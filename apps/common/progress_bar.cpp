@@ -1,4 +1,4 @@
-#include "apps/replay/progress_bar.hpp"
+#include "apps/common/progress_bar.hpp"
 
 #include <unistd.h>
 

@@ -1,0 +1,64 @@
+#include "apps/fusion/fusion_runner.hpp"
+
+#include <algorithm>
+
+namespace navfuse::apps {
+
+FusionRunner::FusionRunner(const filter::FilterOptions& filter_options, const Options& options,
+                           FusionObserver& observer)
+    : engine_(filter_options),
+      observer_(observer),
+      solutions_(options.solutions),
+      rate_(options.output_rate_hz),
+      last_engine_epoch_(engine_.imu_epoch()) {}
+
+void FusionRunner::offer(const Measurement& m, std::int64_t arrival_ns) {
+  const MeasurementKind kind = kind_of(m);
+  ++counts_.decoded[static_cast<std::size_t>(kind)];
+  observer_.on_offered(m);
+  if (const auto reason = gate_.check(m)) {
+    counts_.count_gated(kind, *reason);
+    ++gated_total_;
+    return;
+  }
+  if (kind == MeasurementKind::kGnssPosition) num_sats_ = std::get<GnssPosition>(m).num_sats;
+  observer_.on_fused(m);
+  engine_.process(m);
+  if (kind == MeasurementKind::kImu) after_imu(std::get<ImuSample>(m), arrival_ns);
+}
+
+void FusionRunner::after_imu(const ImuSample& s, std::int64_t arrival_ns) {
+  if (!first_imu_) first_imu_ = s.header;
+  last_imu_ns_ = std::max(last_imu_ns_, s.header.time_ns);
+  ++imu_samples_;
+  if (engine_.imu_epoch() == last_engine_epoch_) return;  // the filter did not advance (rejected)
+  last_engine_epoch_ = engine_.imu_epoch();
+
+  // The state time is the solution's time (filter/solution.cpp), known without filling it.
+  epoch_.pose_due = rate_.due(engine_.core().x.time_ns);
+  epoch_.gnss_fused_total = engine_.used(MeasurementKind::kGnssPosition);
+  epoch_.gnss_updated = false;
+  if (epoch_.pose_due) {
+    ++poses_;
+    // GNSSInfo-style outputs go out at the first pose after a fix was fused.
+    epoch_.gnss_updated = epoch_.gnss_fused_total != gnss_at_last_pose_;
+    gnss_at_last_pose_ = epoch_.gnss_fused_total;
+  }
+  epoch_.num_sats = num_sats_;
+  epoch_.arrival_ns = arrival_ns;
+  if (solutions_ == Solutions::kEvery || (solutions_ == Solutions::kPoses && epoch_.pose_due)) {
+    epoch_.solution = engine_.solution();
+  }
+  observer_.on_epoch(epoch_, engine_);
+}
+
+void FusionRunner::fill_summary(Summary& summary, double wall_s) const {
+  fill_measurement_counts(engine_.stats(), counts_, summary);
+  RunStats run;
+  run.wall_s = wall_s;
+  run.imu_samples_per_s = wall_s > 0.0 ? static_cast<double>(imu_samples_) / wall_s : 0.0;
+  for (NavMode mode : engine_.modes_reached()) run.modes_reached.emplace_back(to_string(mode));
+  summary.run = run;
+}
+
+}  // namespace navfuse::apps
