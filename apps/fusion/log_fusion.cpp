@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "apps/common/progress_bar.hpp"
+#include "apps/fusion/merger_thread.hpp"
 #include "core/geodesy/geoid.hpp"
 
 namespace navfuse::apps {
@@ -17,15 +18,16 @@ Summary fuse_log(MeasurementMerger& merger, FusionRunner& runner, FusionObserver
   geo::GeoidGrid::egm96();
 
   std::uint64_t offered = 0;
-  Measurement m;
   const auto start = std::chrono::steady_clock::now();
-  while (merger.next(m)) {
-    runner.offer(m);
+  MergerThread reader(merger);
+  while (const Measurement* m = reader.next()) {
+    runner.offer(*m);
     if ((++offered & 0x3FFF) == 0) {
-      bar.update(merger.bytes_read());
-      lines.update(merger.bytes_read());
+      bar.update(reader.bytes_read());
+      lines.update(reader.bytes_read());
     }
   }
+  reader.join();
   observer.on_finished();
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   bar.clear();

@@ -4,4 +4,5 @@ target_sources(navfuse_apps PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/fusion_runner.cpp
   ${CMAKE_CURRENT_LIST_DIR}/log_fusion.cpp
   ${CMAKE_CURRENT_LIST_DIR}/measurement_counts.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/measurement_merger.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/measurement_merger.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/merger_thread.cpp)
