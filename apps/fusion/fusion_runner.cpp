@@ -1,6 +1,7 @@
 #include "apps/fusion/fusion_runner.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace navfuse::apps {
 
@@ -9,6 +10,7 @@ FusionRunner::FusionRunner(const filter::FilterOptions& filter_options, const Op
     : engine_(filter_options),
       observer_(observer),
       solutions_(options.solutions),
+      imu_guard_(std::llround(engine_.options().max_imu_gap_s * 1e9)),
       rate_(options.output_rate_hz),
       last_engine_epoch_(engine_.imu_epoch()) {}
 
@@ -21,10 +23,42 @@ void FusionRunner::offer(const Measurement& m, std::int64_t arrival_ns) {
     ++gated_total_;
     return;
   }
+  if (kind == MeasurementKind::kImu) {
+    offer_imu(m, arrival_ns);
+    return;
+  }
   if (kind == MeasurementKind::kGnssPosition) num_sats_ = std::get<GnssPosition>(m).num_sats;
   observer_.on_fused(m);
   engine_.process(m);
-  if (kind == MeasurementKind::kImu) after_imu(std::get<ImuSample>(m), arrival_ns);
+}
+
+void FusionRunner::offer_imu(const Measurement& m, std::int64_t arrival_ns) {
+  const ImuTimeGuard::Verdict v = imu_guard_.check(header_of(m).time_ns);
+  if (v.reject_held) reject_held_imu();
+  if (v.release_held) fuse_imu(held_imu_, held_arrival_ns_);
+  if (v.hold) {
+    held_imu_ = m;
+    held_arrival_ns_ = arrival_ns;
+    return;
+  }
+  fuse_imu(m, arrival_ns);
+}
+
+void FusionRunner::fuse_imu(const Measurement& m, std::int64_t arrival_ns) {
+  observer_.on_fused(m);
+  engine_.process(m);
+  after_imu(std::get<ImuSample>(m), arrival_ns);
+}
+
+void FusionRunner::reject_held_imu() {
+  counts_.count_gated(MeasurementKind::kImu, "time_jump");
+  ++gated_total_;
+}
+
+void FusionRunner::finish() {
+  if (!imu_guard_.holding()) return;
+  imu_guard_.drop_held();
+  reject_held_imu();
 }
 
 void FusionRunner::after_imu(const ImuSample& s, std::int64_t arrival_ns) {

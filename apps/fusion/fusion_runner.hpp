@@ -1,9 +1,11 @@
 // The one fusion loop body of navfuse: every measurement `replay`, `bench` and `run` hand to the
 // filter goes through FusionRunner::offer(), whatever its source (a merged log, a live queue).
 //
-//   offered measurement -> decoded count -> time-base gate -> filter -> (IMU epoch?) -> OutputEpoch
+//   offered measurement -> decoded count -> time-base gate -> IMU time guard -> filter
+//     -> (IMU epoch?) -> OutputEpoch
 //
-// The runner owns the time-base gate (apps/fusion/time_base_gate.hpp), the per-kind counts, the
+// The runner owns the time-base gate (apps/fusion/time_base_gate.hpp), the guard against a lone
+// wild IMU timestamp (apps/fusion/imu_time_guard.hpp), the per-kind counts, the
 // engine, the detection of a new IMU epoch, the output-rate decision (output.rate_hz) and the
 // run statistics of the Summary. What a command does with the stream it sees through a
 // FusionObserver: replay writes poses and scores truth, bench records the device and navfuse
@@ -19,6 +21,7 @@
 #include "apps/common/summary.hpp"
 #include "apps/fusion/measurement_counts.hpp"
 #include "apps/fusion/output_epoch.hpp"
+#include "apps/fusion/imu_time_guard.hpp"
 #include "apps/fusion/time_base_gate.hpp"
 #include "apps/output/output_rate.hpp"
 #include "core/measurements/measurements.hpp"
@@ -54,6 +57,9 @@ class FusionRunner {
 
   // One measurement, from any input. `arrival_ns`: host time its bytes arrived (run), or 0.
   void offer(const Measurement& m, std::int64_t arrival_ns = 0);
+  // The input ended: an IMU sample still held by the time guard is rejected (see
+  // imu_time_guard.hpp). Call once before fill_summary().
+  void finish();
 
   filter::Engine& engine() { return engine_; }
   const filter::Engine& engine() const { return engine_; }
@@ -68,12 +74,18 @@ class FusionRunner {
   void fill_summary(Summary& summary, double wall_s) const;
 
  private:
+  void offer_imu(const Measurement& m, std::int64_t arrival_ns);
+  void fuse_imu(const Measurement& m, std::int64_t arrival_ns);
+  void reject_held_imu();
   void after_imu(const ImuSample& s, std::int64_t arrival_ns);
 
   filter::Engine engine_;
   FusionObserver& observer_;
   Solutions solutions_;
   TimeBaseGate gate_;
+  ImuTimeGuard imu_guard_;
+  Measurement held_imu_;  // held by imu_guard_ until the next sample tells what it was
+  std::int64_t held_arrival_ns_ = 0;
   OutputRate rate_;
   MeasurementCounts counts_;
   OutputEpoch epoch_;

@@ -28,6 +28,7 @@ Summary fuse_log(MeasurementMerger& merger, FusionRunner& runner, FusionObserver
     }
   }
   reader.join();
+  runner.finish();
   observer.on_finished();
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   bar.clear();

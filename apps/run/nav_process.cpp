@@ -125,6 +125,7 @@ void NavProcess::filter_loop() {
       if (stop_filter_.load(std::memory_order_relaxed)) break;
     }
   }
+  runner_->finish();
   report_status();  // the final state, for whoever watches NAVFUSE_STATUS
 }
 

@@ -143,5 +143,57 @@ TEST(FusionRunner, GnssUpdatedOnlyAtThePoseAfterAFusedFix) {
   EXPECT_EQ(rec.epochs.back().num_sats, 5 + 2999 / 100 % 7);
 }
 
+TEST(FusionRunner, OneWildImuTimestampIsRejectedAndTheStreamGoesOn) {
+  Recorder rec;
+  FusionRunner runner(filter::FilterOptions{}, {.output_rate_hz = 0.0}, rec);
+  constexpr std::int64_t kYearNs = 365LL * 86'400 * 1'000'000'000;
+  for (int i = 0; i < 300; ++i) {
+    const std::int64_t t = kStartNs + i * kImuPeriodNs;
+    runner.offer(still_imu(i == 150 ? t + kYearNs : t));  // one checksum-valid sample a year ahead
+  }
+  runner.finish();
+  Summary s;
+  runner.fill_summary(s, 1.0);
+  EXPECT_EQ(rejected(s, MeasurementKind::kImu, "time_jump"), 1u);
+  EXPECT_EQ(rejected(s, MeasurementKind::kImu, "time_backwards"), 0u);
+  EXPECT_EQ(rejected(s, MeasurementKind::kImu, "time_gap"), 0u);
+  EXPECT_EQ(runner.imu_samples(), 299u);
+  EXPECT_EQ(rec.epochs.back().solution.header.time_ns, kStartNs + 299 * kImuPeriodNs);
+}
+
+TEST(FusionRunner, ARealGapIsFusedAfterTheNextSampleConfirmsIt) {
+  Recorder rec;
+  FusionRunner runner(filter::FilterOptions{}, {.output_rate_hz = 0.0}, rec);
+  constexpr std::int64_t kGapNs = 5'000'000'000;  // longer than max_imu_gap_s (1 s)
+  for (int i = 0; i < 200; ++i) {
+    const std::int64_t t = kStartNs + i * kImuPeriodNs + (i >= 100 ? kGapNs : 0);
+    runner.offer(still_imu(t));
+    if (i == 100) {
+      EXPECT_EQ(runner.imu_samples(), 100u) << "the first sample after the gap waits";
+    }
+    if (i == 101) {
+      EXPECT_EQ(runner.imu_samples(), 102u) << "the next one confirms it: both go in";
+    }
+  }
+  runner.finish();
+  Summary s;
+  runner.fill_summary(s, 1.0);
+  EXPECT_EQ(rejected(s, MeasurementKind::kImu, "time_jump"), 0u);
+  EXPECT_EQ(rejected(s, MeasurementKind::kImu, "time_gap"), 1u) << "the filter restarts across it, as before";
+  EXPECT_EQ(runner.imu_samples(), 200u);
+}
+
+TEST(FusionRunner, AWildSampleAtTheEndIsRejectedByFinish) {
+  Recorder rec;
+  FusionRunner runner(filter::FilterOptions{}, {.output_rate_hz = 0.0}, rec);
+  for (int i = 0; i < 10; ++i) runner.offer(still_imu(kStartNs + i * kImuPeriodNs));
+  runner.offer(still_imu(kStartNs + 86'400'000'000'000LL));
+  runner.finish();
+  Summary s;
+  runner.fill_summary(s, 1.0);
+  EXPECT_EQ(rejected(s, MeasurementKind::kImu, "time_jump"), 1u);
+  EXPECT_EQ(runner.imu_samples(), 10u);
+}
+
 }  // namespace
 }  // namespace navfuse::apps
