@@ -38,6 +38,7 @@ nlohmann::ordered_json Summary::to_json(bool decode_only) const {
     j["run"] = {{"wall_s", run->wall_s},
                 {"imu_samples_per_s", run->imu_samples_per_s},
                 {"modes_reached", run->modes_reached}};
+    if (interrupted_by != 0) j["run"]["interrupted_by_signal"] = interrupted_by;
   }
   for (const auto& [key, value] : extra.items()) j[key] = value;
   return j;
@@ -76,6 +77,9 @@ void Summary::print(std::ostream& os, bool decode_only) const {
        << run->imu_samples_per_s << " IMU samples/s; modes reached:";
     for (const auto& mode : run->modes_reached) os << " " << mode;
     os << "\n" << std::defaultfloat;
+    if (interrupted_by != 0) {
+      os << "interrupted by signal " << interrupted_by << ": stopped early, outputs hold what was processed\n";
+    }
   }
 }
 

@@ -42,6 +42,7 @@ struct Summary {
   std::vector<InputSummary> inputs;
   std::array<KindSummary, static_cast<std::size_t>(MeasurementKind::kCount)> kinds{};
   std::optional<RunStats> run;  // absent for `decode`
+  int interrupted_by = 0;       // the signal that stopped the run early (0: ran to the end)
   // Extra top-level sections (e.g. accuracy against truth) added by commands.
   nlohmann::ordered_json extra = nlohmann::ordered_json::object();
 

@@ -19,7 +19,9 @@ struct Cancelled : std::runtime_error {
 MergerThread::MergerThread(MeasurementMerger& merger)
     : merger_(merger), pipe_(kBatchMeasurements, kBatches), thread_([this] { run(); }) {}
 
-MergerThread::~MergerThread() {
+MergerThread::~MergerThread() { stop(); }
+
+void MergerThread::stop() {
   if (!thread_.joinable()) return;
   pipe_.fail(std::make_exception_ptr(Cancelled()));
   thread_.join();

@@ -29,6 +29,8 @@ class MergerThread {
   std::uint64_t bytes_read() const { return bytes_read_.load(std::memory_order_relaxed); }
   // Waits for the reading thread: after it, the merger's summaries are final.
   void join();
+  // Stops the reading thread early (nothing more comes out of next()) and waits for it.
+  void stop();
 
  private:
   void run();

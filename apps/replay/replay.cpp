@@ -94,7 +94,8 @@ ReplayResult run_replay(const ReplayOptions& options) {
   FusionRunner runner(filter::options_from_config(config),
                       {.output_rate_hz = rate_hz, .solutions = observer.solutions()}, observer);
   ReplayResult result;
-  result.summary = fuse_log(merger, runner, observer, {.progress_bar = options.progress});
+  result.summary = fuse_log(merger, runner, observer,
+                            {.progress_bar = options.progress, .interrupt = options.interrupt});
   outputs.commit();
 
   result.imu_samples = runner.imu_samples();

@@ -10,6 +10,7 @@
 // truth when given. Output files appear only complete (OutputFile); a failure leaves none.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -29,6 +30,9 @@ struct ReplayOptions {
   std::optional<double> output_rate_hz;  // overrides the config's output.rate_hz
   bool allow_truncated = false;
   bool progress = false;  // progress bar on stderr (only drawn when it is a terminal)
+  // Polled while replaying (InterruptSignals::received()): non-zero stops early; the outputs are
+  // committed with what was processed and ReplayResult::summary.interrupted_by says so.
+  const std::atomic<int>* interrupt = nullptr;
 };
 
 struct ReplayResult {

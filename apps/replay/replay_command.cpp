@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "apps/common/command_error.hpp"
+#include "apps/common/interrupt_signals.hpp"
 #include "apps/common/summary.hpp"
 #include "apps/replay/replay.hpp"
 
@@ -30,6 +31,8 @@ int run(ReplayArgs& args) {
     args.options.lcm_url = args.lcm_url;
   }
   args.options.progress = !args.quiet;
+  const InterruptSignals signals;
+  args.options.interrupt = &InterruptSignals::received();
   const ReplayResult result = run_replay(args.options);
   if (!args.summary_json.empty()) write_json_file(args.summary_json, result.summary.to_json(/*decode_only=*/false));
   for (const auto& path : result.truncated_inputs) {
@@ -42,6 +45,11 @@ int run(ReplayArgs& args) {
       std::cout << "lcm: " << (*it)["published"] << " messages published, " << (*it)["failures"] << " failed\n";
     }
     std::cout << result.accuracy_text;
+  }
+  if (result.summary.interrupted_by != 0) {
+    std::cerr << "navfuse: replay interrupted by signal " << result.summary.interrupted_by
+              << ": outputs and summary cover the part processed\n";
+    return 128 + result.summary.interrupted_by;
   }
   return 0;
 }
