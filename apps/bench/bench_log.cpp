@@ -74,7 +74,8 @@ BenchLog collect_bench_log(const BenchLogOptions& options) {
   log.output_rate_hz = config.output.rate_hz;
   BenchObserver observer(log, specs);
   FusionRunner runner(filter::options_from_config(config),
-                      {.output_rate_hz = config.output.rate_hz, .solutions = FusionRunner::Solutions::kPoses}, observer);
+                      {.output_rate_hz = config.output.rate_hz, .solutions = FusionRunner::Solutions::kPoses, .gnss_outages = {}},
+                      observer);
   log.summary = fuse_log(
       merger, runner, observer,
       {.progress_bar = options.progress, .progress_lines_label = options.progress ? "navfuse bench" : nullptr});

@@ -4,12 +4,19 @@
 #include <cmath>
 
 namespace navfuse::apps {
+namespace {
+bool is_gnss(MeasurementKind k) {
+  return k == MeasurementKind::kGnssPosition || k == MeasurementKind::kGnssVelocity ||
+         k == MeasurementKind::kGnssHeading;
+}
+}  // namespace
 
 FusionRunner::FusionRunner(const filter::FilterOptions& filter_options, const Options& options,
                            FusionObserver& observer)
     : engine_(filter_options),
       observer_(observer),
       solutions_(options.solutions),
+      outages_(options.gnss_outages),
       imu_guard_(std::llround(engine_.options().max_imu_gap_s * 1e9)),
       rate_(options.output_rate_hz),
       last_engine_epoch_(engine_.imu_epoch()) {}
@@ -25,6 +32,11 @@ void FusionRunner::offer(const Measurement& m, std::int64_t arrival_ns) {
   }
   if (kind == MeasurementKind::kImu) {
     offer_imu(m, arrival_ns);
+    return;
+  }
+  if (outages_ && first_imu_ && is_gnss(kind) && outages_->in_outage(header_of(m).time_ns, first_imu_->time_ns)) {
+    counts_.count_gated(kind, "outage");
+    ++gated_total_;
     return;
   }
   if (kind == MeasurementKind::kGnssPosition) num_sats_ = std::get<GnssPosition>(m).num_sats;

@@ -21,6 +21,7 @@
 #include "apps/common/summary.hpp"
 #include "apps/fusion/measurement_counts.hpp"
 #include "apps/fusion/output_epoch.hpp"
+#include "apps/fusion/gnss_outage_plan.hpp"
 #include "apps/fusion/imu_time_guard.hpp"
 #include "apps/fusion/time_base_gate.hpp"
 #include "apps/output/output_rate.hpp"
@@ -51,6 +52,7 @@ class FusionRunner {
   struct Options {
     double output_rate_hz = 0.0;  // output.rate_hz: 0 = a pose at every IMU epoch
     Solutions solutions = Solutions::kEvery;
+    std::optional<GnssOutagePlan> gnss_outages;  // replay --gnss-outage: GNSS withheld in windows
   };
 
   FusionRunner(const filter::FilterOptions& filter_options, const Options& options, FusionObserver& observer);
@@ -82,6 +84,7 @@ class FusionRunner {
   filter::Engine engine_;
   FusionObserver& observer_;
   Solutions solutions_;
+  std::optional<GnssOutagePlan> outages_;
   TimeBaseGate gate_;
   ImuTimeGuard imu_guard_;
   Measurement held_imu_;  // held by imu_guard_ until the next sample tells what it was

@@ -2,6 +2,7 @@
 # engine, epochs, output rate, run statistics) and the log merge that feeds replay and bench.
 target_sources(navfuse_apps PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/fusion_runner.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gnss_outage_plan.cpp
   ${CMAKE_CURRENT_LIST_DIR}/log_fusion.cpp
   ${CMAKE_CURRENT_LIST_DIR}/measurement_counts.cpp
   ${CMAKE_CURRENT_LIST_DIR}/measurement_merger.cpp

@@ -90,9 +90,16 @@ ReplayResult run_replay(const ReplayOptions& options) {
     outputs.add(std::move(writer));
   }
 
+  std::optional<GnssOutagePlan> outages;
+  if (!options.gnss_outage.empty()) {
+    std::string error;
+    outages = GnssOutagePlan::parse(options.gnss_outage, error);
+    if (!outages) throw CommandError(error);
+  }
   ReplayObserver observer(outputs, accuracy.get());
   FusionRunner runner(filter::options_from_config(config),
-                      {.output_rate_hz = rate_hz, .solutions = observer.solutions()}, observer);
+                      {.output_rate_hz = rate_hz, .solutions = observer.solutions(), .gnss_outages = outages},
+                      observer);
   ReplayResult result;
   result.summary = fuse_log(merger, runner, observer,
                             {.progress_bar = options.progress, .interrupt = options.interrupt});
@@ -102,6 +109,10 @@ ReplayResult run_replay(const ReplayOptions& options) {
   result.poses = runner.poses();
   Summary& summary = result.summary;
   summary.extra["output"] = {{"rate_hz", rate_hz}, {"poses", result.poses}};
+  if (outages) {
+    summary.extra["gnss_outage"] = {
+        {"period_s", outages->period_s}, {"duration_s", outages->duration_s}, {"start_s", outages->start_s}};
+  }
   if (lcm) summary.extra["lcm"] = {{"published", lcm->published()}, {"failures", lcm->failures()}};
   if (accuracy) {
     nlohmann::ordered_json a = accuracy->to_json();

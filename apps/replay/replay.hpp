@@ -28,6 +28,7 @@ struct ReplayOptions {
   std::string truth_path;
   std::optional<std::string> lcm_url;  // --lcm [URL]: NAVFUSE_POSE / NAVFUSE_IMU at the pose rate ("" = LCM's default)
   std::optional<double> output_rate_hz;  // overrides the config's output.rate_hz
+  std::string gnss_outage;  // --gnss-outage PERIOD_S:DURATION_S[:START_S] (empty: none)
   bool allow_truncated = false;
   bool progress = false;  // progress bar on stderr (only drawn when it is a terminal)
   // Polled while replaying (InterruptSignals::received()): non-zero stops early; the outputs are

@@ -74,6 +74,8 @@ void add_replay_command(CLI::App& root, int& exit_code) {
   sub->add_option("--truth", o.truth_path, "Truth CSV (navfuse sim --truth): report the error against it");
   sub->add_option("--rate", args->rate_hz, "Pose output rate in Hz, overriding output.rate_hz (0 = every IMU sample)")
       ->check(CLI::NonNegativeNumber);
+  sub->add_option("--gnss-outage", o.gnss_outage,
+                  "Withhold GNSS in windows PERIOD_S:DURATION_S[:START_S] from the first IMU sample (e.g. 30:10)");
   sub->add_flag("--allow-truncated", o.allow_truncated, "Replay an input whose last frame is cut off");
   sub->add_flag("-q,--quiet", args->quiet, "Print only errors");
   sub->callback([args, &exit_code] { exit_code = run(*args); });

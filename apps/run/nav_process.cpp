@@ -46,7 +46,9 @@ NavProcess::NavProcess(const RunOptions& options)
   if (!(options_.status_interval_s > 0)) throw CommandError("--status-interval must be > 0 s");
   runner_ = std::make_unique<FusionRunner>(
       filter::options_from_config(config_),
-      FusionRunner::Options{.output_rate_hz = config_.output.rate_hz, .solutions = FusionRunner::Solutions::kEvery},
+      FusionRunner::Options{.output_rate_hz = config_.output.rate_hz,
+                            .solutions = FusionRunner::Solutions::kEvery,
+                            .gnss_outages = std::nullopt},
       static_cast<FusionObserver&>(*this));
 
   // Parse every argument before opening anything: a typo in the last --in is reported without

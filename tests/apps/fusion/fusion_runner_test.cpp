@@ -34,6 +34,11 @@ GnssPosition fix_at(std::int64_t t_ns, TimeSource source, std::uint16_t stream, 
   return p;
 }
 
+FusionRunner::Options options(double rate_hz, FusionRunner::Solutions solutions = FusionRunner::Solutions::kEvery,
+                             std::optional<GnssOutagePlan> outages = std::nullopt) {
+  return {.output_rate_hz = rate_hz, .solutions = solutions, .gnss_outages = outages};
+}
+
 struct Recorder final : FusionObserver {
   std::vector<OutputEpoch> epochs;
   std::size_t offered = 0, fused = 0;
@@ -50,7 +55,7 @@ std::uint64_t rejected(const Summary& s, MeasurementKind kind, const std::string
 
 TEST(FusionRunner, GatesOtherClocksAndSecondImuAndCountsEveryOffer) {
   Recorder rec;
-  FusionRunner runner(filter::FilterOptions{}, {.output_rate_hz = 0.0}, rec);
+  FusionRunner runner(filter::FilterOptions{}, options(0.0), rec);
   for (int i = 0; i < 50; ++i) {
     const std::int64_t t = kStartNs + i * kImuPeriodNs;
     runner.offer(still_imu(t));
@@ -83,7 +88,7 @@ TEST(FusionRunner, GatesOtherClocksAndSecondImuAndCountsEveryOffer) {
 
 TEST(FusionRunner, RejectedImuSampleIsNoEpoch) {
   Recorder rec;
-  FusionRunner runner(filter::FilterOptions{}, {.output_rate_hz = 0.0}, rec);
+  FusionRunner runner(filter::FilterOptions{}, options(0.0), rec);
   runner.offer(still_imu(kStartNs));
   runner.offer(still_imu(kStartNs + kImuPeriodNs));
   const std::size_t before = rec.epochs.size();
@@ -97,7 +102,7 @@ TEST(FusionRunner, RejectedImuSampleIsNoEpoch) {
 TEST(FusionRunner, PosesAtTheOutputRateOnTheMeasurementTimeAxis) {
   Recorder rec;
   // 100 Hz IMU, 20 Hz poses: slots of 50 ms, the first epoch at or after each slot boundary.
-  FusionRunner runner(filter::FilterOptions{}, {.output_rate_hz = 20.0, .solutions = FusionRunner::Solutions::kPoses}, rec);
+  FusionRunner runner(filter::FilterOptions{}, options(20.0, FusionRunner::Solutions::kPoses), rec);
   for (int i = 0; i < 200; ++i) runner.offer(still_imu(kStartNs + i * kImuPeriodNs));
   std::int64_t last_slot = -1;
   std::size_t due = 0;
@@ -121,7 +126,7 @@ TEST(FusionRunner, PosesAtTheOutputRateOnTheMeasurementTimeAxis) {
 
 TEST(FusionRunner, GnssUpdatedOnlyAtThePoseAfterAFusedFix) {
   Recorder rec;
-  FusionRunner runner(filter::FilterOptions{}, {.output_rate_hz = 10.0}, rec);
+  FusionRunner runner(filter::FilterOptions{}, options(10.0), rec);
   for (int i = 0; i < 3000; ++i) {  // 30 s at rest with a 1 Hz fix on GPS time
     const std::int64_t t = kStartNs + i * kImuPeriodNs;
     runner.offer(still_imu(t));
@@ -145,7 +150,7 @@ TEST(FusionRunner, GnssUpdatedOnlyAtThePoseAfterAFusedFix) {
 
 TEST(FusionRunner, OneWildImuTimestampIsRejectedAndTheStreamGoesOn) {
   Recorder rec;
-  FusionRunner runner(filter::FilterOptions{}, {.output_rate_hz = 0.0}, rec);
+  FusionRunner runner(filter::FilterOptions{}, options(0.0), rec);
   constexpr std::int64_t kYearNs = 365LL * 86'400 * 1'000'000'000;
   for (int i = 0; i < 300; ++i) {
     const std::int64_t t = kStartNs + i * kImuPeriodNs;
@@ -163,7 +168,7 @@ TEST(FusionRunner, OneWildImuTimestampIsRejectedAndTheStreamGoesOn) {
 
 TEST(FusionRunner, ARealGapIsFusedAfterTheNextSampleConfirmsIt) {
   Recorder rec;
-  FusionRunner runner(filter::FilterOptions{}, {.output_rate_hz = 0.0}, rec);
+  FusionRunner runner(filter::FilterOptions{}, options(0.0), rec);
   constexpr std::int64_t kGapNs = 5'000'000'000;  // longer than max_imu_gap_s (1 s)
   for (int i = 0; i < 200; ++i) {
     const std::int64_t t = kStartNs + i * kImuPeriodNs + (i >= 100 ? kGapNs : 0);
@@ -185,7 +190,7 @@ TEST(FusionRunner, ARealGapIsFusedAfterTheNextSampleConfirmsIt) {
 
 TEST(FusionRunner, AWildSampleAtTheEndIsRejectedByFinish) {
   Recorder rec;
-  FusionRunner runner(filter::FilterOptions{}, {.output_rate_hz = 0.0}, rec);
+  FusionRunner runner(filter::FilterOptions{}, options(0.0), rec);
   for (int i = 0; i < 10; ++i) runner.offer(still_imu(kStartNs + i * kImuPeriodNs));
   runner.offer(still_imu(kStartNs + 86'400'000'000'000LL));
   runner.finish();
@@ -193,6 +198,55 @@ TEST(FusionRunner, AWildSampleAtTheEndIsRejectedByFinish) {
   runner.fill_summary(s, 1.0);
   EXPECT_EQ(rejected(s, MeasurementKind::kImu, "time_jump"), 1u);
   EXPECT_EQ(runner.imu_samples(), 10u);
+}
+
+}  // namespace
+}  // namespace navfuse::apps
+
+namespace navfuse::apps {
+namespace {
+
+TEST(GnssOutagePlan, ParsesAndRefusesWithTheOptionNamed) {
+  std::string error;
+  const auto p = GnssOutagePlan::parse("30:10:5", error);
+  ASSERT_TRUE(p);
+  EXPECT_EQ(p->period_s, 30.0);
+  EXPECT_EQ(p->duration_s, 10.0);
+  EXPECT_EQ(p->start_s, 5.0);
+  for (const char* bad : {"30", "30:40", "30:0", "x:1", "30:10:-1", "30:10:1:2", "nan:1"}) {
+    EXPECT_FALSE(GnssOutagePlan::parse(bad, error)) << bad;
+    EXPECT_NE(error.find("--gnss-outage"), std::string::npos);
+  }
+}
+
+TEST(GnssOutagePlan, WindowsByHand) {
+  std::string error;
+  const auto p = *GnssOutagePlan::parse("30:10:5", error);
+  const std::int64_t first = 1'000'000'000'000LL;
+  const auto at = [&](double s) { return first + static_cast<std::int64_t>(s * 1e9); };
+  EXPECT_FALSE(p.in_outage(at(4.999), first));
+  EXPECT_TRUE(p.in_outage(at(5.0), first));
+  EXPECT_TRUE(p.in_outage(at(14.999), first));
+  EXPECT_FALSE(p.in_outage(at(15.0), first));
+  EXPECT_TRUE(p.in_outage(at(35.0), first));   // the second window: 35-45 s
+  EXPECT_FALSE(p.in_outage(at(34.9), first));
+  EXPECT_EQ(p.outage_end_ns(at(40.0), first), at(45.0));
+}
+
+TEST(FusionRunner, GnssInsideAnOutageWindowIsWithheldAndCounted) {
+  Recorder rec;
+  std::string error;
+  FusionRunner runner(filter::FilterOptions{},
+                      options(10.0, FusionRunner::Solutions::kEvery, GnssOutagePlan::parse("10:4", error)), rec);
+  for (int i = 0; i < 3000; ++i) {  // 30 s, 1 Hz fixes at 0.03 s past each second
+    const std::int64_t t = kStartNs + i * kImuPeriodNs;
+    runner.offer(still_imu(t));
+    if (i % 100 == 3) runner.offer(fix_at(t, TimeSource::kGps, 1, 8));
+  }
+  Summary s;
+  runner.fill_summary(s, 1.0);
+  // Fixes at 0.03, 1.03, ... 29.03 s; windows [0,4), [10,14), [20,24): 4 fixes in each.
+  EXPECT_EQ(rejected(s, MeasurementKind::kGnssPosition, "outage"), 12u);
 }
 
 }  // namespace
