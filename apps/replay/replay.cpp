@@ -8,8 +8,7 @@
 #include "apps/common/input_spec.hpp"
 #include "apps/lcm/lcm_pose_writer.hpp"
 #include "apps/output/csv_pose_writer.hpp"
-#include "apps/output/fe_pose_writer.hpp"
-#include "apps/output/mip_pose_writer.hpp"
+#include "apps/output/encoded_file_writer.hpp"
 #include "apps/output/output_rate.hpp"
 #include "apps/output/pose_output_thread.hpp"
 #include "apps/output/pose_outputs.hpp"
@@ -29,9 +28,8 @@ config::DeviceProfile profile_for_format(std::string_view format) {
   return config::DeviceProfile::kGeneric;
 }
 
-// Replay's use of the stream: every solution to the writers (IMU output), and at the output
-// rate a pose (FusionEngine / MIP / CSV) and a truth comparison. The writers run on their own
-// thread (PoseOutputThread); the truth comparison is cheap and stays here.
+// Replay's use of the stream: every output epoch to the writers, which run on their own thread
+// (PoseOutputThread), and at the output rate a truth comparison (cheap, stays here).
 class ReplayObserver final : public PipelineObserver {
  public:
   ReplayObserver(PoseOutputs& outputs, TruthAccuracy* accuracy, double rate_hz)
@@ -45,7 +43,15 @@ class ReplayObserver final : public PipelineObserver {
     if (!writer_ && accuracy_ == nullptr) return;
     const NavSolution& s = engine.solution();
     const bool pose_due = rate_.due(s.header.time_ns);
-    if (writer_) writer_->post(s, pose_due, engine.stats().of(MeasurementKind::kGnssPosition).used, num_sats_);
+    if (writer_) {
+      epoch_.solution = s;
+      epoch_.pose_due = pose_due;
+      epoch_.gnss_fused_total = engine.stats().of(MeasurementKind::kGnssPosition).used;
+      epoch_.gnss_updated = pose_due && epoch_.gnss_fused_total != gnss_at_last_pose_;
+      epoch_.num_sats = num_sats_;
+      if (pose_due) gnss_at_last_pose_ = epoch_.gnss_fused_total;
+      writer_->post(epoch_);
+    }
     if (!pose_due) return;
     ++poses;
     if (accuracy_) accuracy_->add(s);
@@ -60,6 +66,8 @@ class ReplayObserver final : public PipelineObserver {
   TruthAccuracy* accuracy_;
   OutputRate rate_;
   std::optional<PoseOutputThread> writer_;
+  OutputEpoch epoch_;
+  std::uint64_t gnss_at_last_pose_ = 0;
   std::uint8_t num_sats_ = 0;
 };
 
@@ -87,8 +95,8 @@ ReplayResult run_replay(const ReplayOptions& options) {
   std::unique_ptr<TruthAccuracy> accuracy;
   if (!options.truth_path.empty()) accuracy = std::make_unique<TruthAccuracy>(options.truth_path);
   PoseOutputs outputs;
-  if (!options.fe_out.empty()) outputs.add(std::make_unique<FePoseWriter>(options.fe_out));
-  if (!options.mip_out.empty()) outputs.add(std::make_unique<MipPoseWriter>(options.mip_out));
+  if (!options.fe_out.empty()) outputs.add(std::make_unique<FeFileWriter>(options.fe_out));
+  if (!options.mip_out.empty()) outputs.add(std::make_unique<MipFileWriter>(options.mip_out));
   if (!options.csv_out.empty()) outputs.add(std::make_unique<CsvPoseWriter>(options.csv_out));
   const LcmPoseWriter* lcm = nullptr;
   if (options.lcm_url) {

@@ -6,7 +6,6 @@
 #include "apps/run/fe_device_emulator.hpp"
 #include "apps/run/mip_device_emulator.hpp"
 #include "apps/run/run_log.hpp"
-#include "core/rotation/rotation.hpp"
 
 namespace navfuse::apps {
 namespace {
@@ -27,11 +26,6 @@ config::Config load_config(const std::string& path) {
   } catch (const config::ConfigError& e) {
     throw CommandError(e.what());
   }
-}
-
-Eigen::Matrix3d mounting_of(const config::Config& c) {
-  const auto& m = c.imu.mounting_rpy_deg;
-  return rot::dcm_from_rpy(Eigen::Vector3d(m[0], m[1], m[2]) * rot::kDegToRad);
 }
 
 }  // namespace
@@ -72,7 +66,7 @@ NavProcess::NavProcess(const RunOptions& options)
     outputs_.push_back(
         std::make_unique<OutputSink>("--mip-out", mip_uri, std::make_unique<MipDeviceEmulator>(), queue_, actions_));
   }
-  if (options_.lcm) lcm_ = std::make_unique<LcmService>(options_.lcm_url, mounting_of(config_), queue_, latency_);
+  if (options_.lcm) lcm_ = std::make_unique<LcmService>(options_.lcm_url, queue_, latency_);
   for (const auto& in : inputs_) snapshots_.push_back({in->name(), {}});
 }
 
@@ -142,15 +136,17 @@ void NavProcess::process(const ArrivedMeasurement& item) {
 
 void NavProcess::after_imu(const ArrivedMeasurement& item) {
   ++imu_samples_;
-  if (lcm_) lcm_->post_imu(std::get<ImuSample>(item.measurement));
   if (engine_->imu_epoch() == last_epoch_) return;  // the filter did not advance (rejected sample)
   last_epoch_ = engine_->imu_epoch();
   epoch_.solution = engine_->solution();
   epoch_.pose_due = rate_.due(epoch_.solution.header.time_ns);
   epoch_.gnss_fused_total = engine_->stats().of(MeasurementKind::kGnssPosition).used;
+  epoch_.gnss_updated = epoch_.pose_due && epoch_.gnss_fused_total != gnss_at_last_pose_;
+  if (epoch_.pose_due) gnss_at_last_pose_ = epoch_.gnss_fused_total;
   epoch_.num_sats = num_sats_;
+  epoch_.arrival_ns = item.arrival_ns;
   for (auto& out : outputs_) out->post(epoch_);
-  if (lcm_ && epoch_.pose_due) lcm_->post_pose(epoch_.solution, item.arrival_ns);
+  if (lcm_) lcm_->post_epoch(epoch_);
 }
 
 void NavProcess::track_gnss(const Measurement& m) {

@@ -5,7 +5,7 @@
 //   output threads (MIP 0x13)    --aiding-------->--------'               |
 //   output threads (FE/MIP commands) --engine actions--> filter thread    |
 //   filter thread --epochs--> output threads (--fe-out, --mip-out, each its own link)
-//   filter thread --poses, IMU, GNSS, status--> LCM thread (NAVFUSE_POSE/IMU/GNSS/STATUS)
+//   filter thread --epochs, GNSS, status--> LCM thread (NAVFUSE_POSE/IMU/GNSS/STATUS)
 //
 // Only the filter thread touches the engine. Every arrow into a consumer that may be slow is a
 // bounded queue that drops (and counts) rather than waits, so nothing downstream can stall the
@@ -82,6 +82,7 @@ class NavProcess {
   std::vector<InputSnapshot> snapshots_;
   std::uint64_t last_epoch_ = 0;
   std::uint8_t num_sats_ = 0;
+  std::uint64_t gnss_at_last_pose_ = 0;  // for OutputEpoch::gnss_updated
   GnssPosition pending_fix_;  // waiting for the velocity of the same epoch (NAVFUSE_GNSS)
   bool fix_pending_ = false;
   std::int64_t next_status_ns_ = 0;
