@@ -12,8 +12,6 @@ using fe::MessageType;
 
 constexpr std::size_t kMaxClients = 16;  // framers kept; the oldest client's goes first
 
-bool is_known_rate(std::uint8_t r) { return r <= static_cast<std::uint8_t>(MessageRate::k60S) || r == 0xFF; }
-
 template <class M>
 bool parse(const fe::Frame& frame, M& out) {
   fe::PayloadReader r(frame.payload);
@@ -86,7 +84,7 @@ void FeDeviceEmulator::handle(const fe::Frame& frame, std::vector<std::uint8_t>&
       fe::SetMessageRateMessage m;
       if (!parse(frame, m)) return answer(fe::Response::kInconsistentPayloadLength);
       const auto protocol = static_cast<fe::ProtocolType>(m.protocol);
-      if ((protocol != fe::ProtocolType::kFusionEngine && protocol != fe::ProtocolType::kAll) || !is_known_rate(m.rate)) {
+      if ((protocol != fe::ProtocolType::kFusionEngine && protocol != fe::ProtocolType::kAll) || !fe::valid_rate(m.rate)) {
         return answer(fe::Response::kValueError);
       }
       const bool ok = encoder_.rates().set(m.message_id, static_cast<MessageRate>(m.rate));
