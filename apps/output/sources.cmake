@@ -8,4 +8,5 @@ target_sources(navfuse_apps PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/fe_stream_rates.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mip_epoch_encoder.cpp
   ${CMAKE_CURRENT_LIST_DIR}/output_file.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/output_paths.cpp
   ${CMAKE_CURRENT_LIST_DIR}/pose_output_thread.cpp)

@@ -9,6 +9,7 @@
 #include "apps/lcm/lcm_pose_writer.hpp"
 #include "apps/output/csv_pose_writer.hpp"
 #include "apps/output/encoded_file_writer.hpp"
+#include "apps/output/output_paths.hpp"
 #include "apps/output/output_rate.hpp"
 #include "apps/output/pose_output_thread.hpp"
 #include "apps/output/pose_outputs.hpp"
@@ -91,6 +92,11 @@ ReplayResult run_replay(const ReplayOptions& options) {
   if (!(rate_hz >= 0.0)) throw CommandError("output rate must be >= 0 Hz (0 = every IMU sample)");
 
   // Everything that can fail on bad arguments is opened before the (long) run starts.
+  std::vector<std::string> input_paths;
+  for (const InputSpec& spec : specs) input_paths.push_back(spec.path);
+  if (!options.truth_path.empty()) input_paths.push_back(options.truth_path);
+  check_output_paths(input_paths,
+                     {{"--fe-out", options.fe_out}, {"--mip-out", options.mip_out}, {"--csv", options.csv_out}});
   MeasurementMerger merger(specs, {.chunk_bytes = 16 * 1024, .allow_truncated = options.allow_truncated});
   std::unique_ptr<TruthAccuracy> accuracy;
   if (!options.truth_path.empty()) accuracy = std::make_unique<TruthAccuracy>(options.truth_path);

@@ -1,19 +1,16 @@
-// Outputs: decimation grid, all-or-nothing files, CSV rows, the IMUOutput rebuilt from a
+// Outputs: decimation grid, CSV rows, the IMUOutput rebuilt from a
 // solution (against hand-computed values), and what the epoch encoders send at which epoch
 // (against the DESIGN.md --fe-out / --mip-out contract).
 #include <cmath>
 #include <filesystem>
-#include <stdexcept>
 
 #include <gtest/gtest.h>
 
-#include "apps/common/command_error.hpp"
 #include "apps/output/compensated_imu.hpp"
 #include "apps/output/csv_pose_writer.hpp"
 #include "apps/output/encoded_file_writer.hpp"
 #include "apps/output/fe_epoch_encoder.hpp"
 #include "apps/output/mip_epoch_encoder.hpp"
-#include "apps/output/output_file.hpp"
 #include "apps/output/output_rate.hpp"
 #include "core/rotation/rotation.hpp"
 #include "frontends/fusionengine/framer.hpp"
@@ -47,42 +44,6 @@ TEST(OutputRate, FirstSampleAtOrAfterEachGridPoint) {
   EXPECT_FALSE(rate.due(1'199'999'999));
   EXPECT_TRUE(rate.due(1'350'000'000));   // a gap skips slots, emits once
   EXPECT_FALSE(rate.due(1'360'000'000));
-}
-
-TEST(OutputFile, AppearsOnlyOnCommit) {
-  const auto dir = scratch_dir();
-  const auto path = dir / "out.bin";
-  {
-    OutputFile f(path.string());
-    f.write(std::string_view("abc"));
-    EXPECT_FALSE(std::filesystem::exists(path));
-    EXPECT_TRUE(std::filesystem::exists(path.string() + ".partial"));
-    f.commit();
-  }
-  EXPECT_EQ(read_text(path), "abc");
-  EXPECT_FALSE(std::filesystem::exists(path.string() + ".partial"));
-}
-
-TEST(OutputFile, AbandonedFileLeavesNothing) {
-  const auto dir = scratch_dir();
-  const auto path = dir / "out.bin";
-  try {
-    OutputFile f(path.string());
-    f.write(std::string_view("half"));
-    throw std::runtime_error("run failed");
-  } catch (const std::runtime_error&) {
-  }
-  EXPECT_FALSE(std::filesystem::exists(path));
-  EXPECT_FALSE(std::filesystem::exists(path.string() + ".partial"));
-}
-
-TEST(OutputFile, UnwritableDirectoryIsACommandErrorNamingThePath) {
-  try {
-    OutputFile f("/nonexistent-dir/out.bin");
-    FAIL() << "expected an error";
-  } catch (const CommandError& e) {
-    EXPECT_NE(std::string(e.what()).find("/nonexistent-dir/out.bin"), std::string::npos);
-  }
 }
 
 TEST(CsvPoseWriter, RowHasExactTimeAndFixedDecimals) {
