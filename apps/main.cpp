@@ -1,5 +1,6 @@
 // navfuse: GNSS/INS fusion engine command line. Subcommands (DESIGN.md, contract): replay, run,
 // decode, bench, aid, sim. Each lives in apps/<name>/ and registers itself here.
+#include <csignal>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -13,6 +14,9 @@
 #include "apps/simcmd/sim_command.hpp"
 
 int main(int argc, char** argv) {
+  // A pipe whose reader went away is a write error each output reports (EPIPE, exit non-zero),
+  // not a silent death by SIGPIPE half-way through a file (issue 15, item 7).
+  std::signal(SIGPIPE, SIG_IGN);
   CLI::App app{"navfuse: loosely-coupled GNSS/INS fusion engine"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "navfuse 0.1.0");
@@ -33,6 +37,11 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::cerr << "navfuse: error: " << e.what() << "\n";
     return 1;
+  }
+  // The summary and decode's rows go to standard output: a failed write there fails too.
+  if (!std::cout.flush()) {
+    std::cerr << "navfuse: error: cannot write standard output\n";
+    return exit_code != 0 ? exit_code : 1;
   }
   return exit_code;
 }

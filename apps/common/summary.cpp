@@ -1,10 +1,9 @@
 #include "apps/common/summary.hpp"
 
-#include <cstdio>
-#include <fstream>
 #include <iomanip>
 
 #include "apps/common/command_error.hpp"
+#include "apps/output/output_file.hpp"
 
 namespace navfuse::apps {
 
@@ -84,17 +83,10 @@ void Summary::print(std::ostream& os, bool decode_only) const {
 }
 
 void write_json_file(const std::string& path, const nlohmann::ordered_json& j) {
-  const std::string tmp = path + ".partial";
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    if (!out) throw CommandError("cannot write '" + path + "'");
-    out << j.dump(2) << "\n";
-    if (!out.flush()) throw CommandError("cannot write '" + path + "'");
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw CommandError("cannot write '" + path + "'");
-  }
+  OutputFile out(path);
+  out.write(j.dump(2));
+  out.write(std::string_view("\n"));
+  out.commit();
 }
 
 }  // namespace navfuse::apps

@@ -51,8 +51,8 @@ struct Summary {
   void print(std::ostream& os, bool decode_only) const;
 };
 
-// Writes JSON to `path` atomically (temporary file + rename), so a reader never sees a
-// half-written summary; throws CommandError on failure.
+// Writes JSON to `path` as an OutputFile (apps/output/output_file.hpp: a regular file appears
+// whole, a device or FIFO is streamed to); throws CommandError on failure.
 void write_json_file(const std::string& path, const nlohmann::ordered_json& j);
 
 }  // namespace navfuse::apps

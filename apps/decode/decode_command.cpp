@@ -1,10 +1,11 @@
 #include "apps/decode/decode_command.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,8 @@
 #include "apps/common/input_spec.hpp"
 #include "apps/common/measurement_fields.hpp"
 #include "apps/common/summary.hpp"
+#include "apps/output/output_file.hpp"
+#include "apps/output/output_paths.hpp"
 
 namespace navfuse::apps {
 namespace {
@@ -123,37 +126,39 @@ int run_decode(const DecodeOptions& opt) {
   std::ifstream in(spec.path, std::ios::binary);
   if (!in) throw CommandError("cannot open input '" + spec.path + "'");
 
-  std::ofstream file_out;
-  std::string partial_path;
-  if (!opt.out_path.empty()) {
-    // Write to a temporary name and rename at the end: an interrupted decode never leaves a
-    // file that looks complete.
-    partial_path = opt.out_path + ".partial";
-    file_out.open(partial_path, std::ios::trunc);
-    if (!file_out) throw CommandError("cannot write '" + opt.out_path + "'");
-  }
-  std::ostream& os = opt.out_path.empty() ? std::cout : file_out;
+  check_output_paths({spec.path}, {{"--out", opt.out_path}, {"--summary-json", opt.summary_json}});
+  // -o: the records gather in `text` and go to the file after each input chunk (OutputFile:
+  // complete or absent for a regular file, streamed to a device or FIFO).
+  std::optional<OutputFile> file;
+  if (!opt.out_path.empty()) file.emplace(opt.out_path);
+  std::ostringstream text;
+  std::ostream& os = file ? static_cast<std::ostream&>(text) : std::cout;
+  const auto drain = [&] {
+    if (!file) return;
+    file->write(text.view());
+    text.str({});
+  };
 
   Summary summary;
   auto decoder = spec.frontend->make_decoder();
   PrintingSink sink(os, opt.format == "jsonl", summary);
   sink.protocol_ = spec.frontend->format;
-  std::vector<std::uint8_t> chunk(1 << 20);
+  // 256 KiB of input gives a few MB of records to hold before they go to the file.
+  std::vector<std::uint8_t> chunk(1 << 18);
   while (in) {
     in.read(reinterpret_cast<char*>(chunk.data()), static_cast<std::streamsize>(chunk.size()));
     const auto n = static_cast<std::size_t>(in.gcount());
     if (n == 0) break;
     decoder->feed(std::span(chunk.data(), n), sink);
+    drain();
   }
   if (in.bad()) throw CommandError("read error on '" + spec.path + "'");
   decoder->finish(sink);
-  os.flush();
-  if (!opt.out_path.empty()) {
-    file_out.close();
-    if (!file_out || std::rename(partial_path.c_str(), opt.out_path.c_str()) != 0) {
-      std::remove(partial_path.c_str());
-      throw CommandError("cannot write '" + opt.out_path + "'");
-    }
+  if (file) {
+    drain();
+    file->commit();
+  } else {
+    os.flush();
   }
 
   summary.inputs.push_back({spec.path, std::string(spec.frontend->format), decoder->counters()});

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "apps/output/compensated_imu.hpp"
 #include "core/rotation/rotation.hpp"
 
 namespace navfuse::apps {
@@ -43,17 +44,13 @@ void fill_pose(const NavSolution& s, navfuse::pose_t& out) {
   put(out.accel_bias_mps2, s.accel_bias_mps2);
 }
 
-bool fill_imu(const ImuSample& s, const Eigen::Matrix3d& c_vs, navfuse::imu_t& out) {
-  double scale = 1.0;
-  if (s.quantity == ImuQuantity::kIncrements) {
-    if (!(s.dt_s > 0.0)) return false;
-    scale = 1.0 / s.dt_s;
-  }
-  const bool sensor = s.frame == SensorFrame::kSensor;
-  out.time_gps_ns = s.header.time_ns;
-  put(out.gyro_radps, sensor ? Eigen::Vector3d(c_vs * s.gyro) : s.gyro, scale);
-  put(out.accel_mps2, sensor ? Eigen::Vector3d(c_vs * s.accel) : s.accel, scale);
-  out.dt_s = static_cast<float>(s.dt_s);
+bool fill_imu(const NavSolution& s, navfuse::imu_t& out) {
+  ImuSample imu;
+  if (!compensated_imu_from(s, imu)) return false;
+  out.time_gps_ns = imu.header.time_ns;
+  put(out.gyro_radps, imu.gyro);
+  put(out.accel_mps2, imu.accel);
+  out.dt_s = 0.0f;  // rates, not increments
   return true;
 }
 

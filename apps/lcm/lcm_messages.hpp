@@ -4,8 +4,6 @@
 // per-sample path does not allocate.
 #pragma once
 
-#include <Eigen/Core>
-
 #include "core/measurements/measurements.hpp"
 #include "navfuse/gnss_t.hpp"
 #include "navfuse/imu_t.hpp"
@@ -15,10 +13,9 @@ namespace navfuse::apps {
 
 void fill_pose(const NavSolution& s, navfuse::pose_t& out);
 
-// The sample in the vehicle frame: `c_vs` (sensor -> vehicle DCM, the configured mounting) is
-// applied to sensor-frame samples; increments are divided by their interval to give rates.
-// False when the sample cannot be expressed as rates (increments without an interval).
-bool fill_imu(const ImuSample& s, const Eigen::Matrix3d& c_vs, navfuse::imu_t& out);
+// The filter's bias-compensated angular rate and specific force in the vehicle frame at the
+// solution's time (apps/output/compensated_imu.hpp). False before the attitude is known.
+bool fill_imu(const NavSolution& s, navfuse::imu_t& out);
 
 // A fix, with the velocity of the same epoch when one is given (nullptr: has_velocity = 0).
 void fill_gnss(const GnssPosition& p, const GnssVelocity* v, navfuse::gnss_t& out);

@@ -1,7 +1,6 @@
 #include "apps/lcm/lcm_pose_writer.hpp"
 
 #include "apps/lcm/lcm_open.hpp"
-#include "apps/output/fe_pose_writer.hpp"
 
 namespace navfuse::apps {
 
@@ -9,10 +8,6 @@ LcmPoseWriter::LcmPoseWriter(const std::string& url) : lcm_(url), publisher_(lcm
   require_lcm_open(lcm_, url);
 }
 
-void LcmPoseWriter::on_pose(const PoseEpoch& epoch) {
-  publisher_.publish_pose(epoch.solution);
-  // The solution's IMU is already in the vehicle frame: published with an identity mounting.
-  if (compensated_imu_from(epoch.solution, imu_)) publisher_.publish_imu(imu_);
-}
+void LcmPoseWriter::write(const OutputEpoch& epoch) { publisher_.publish_epoch(epoch); }
 
 }  // namespace navfuse::apps

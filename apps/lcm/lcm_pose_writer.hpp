@@ -1,11 +1,12 @@
-// `navfuse replay --lcm [URL]`: the replayed solution on the nav process's channels (DESIGN.md):
-// at each pose output time, NAVFUSE_POSE and NAVFUSE_IMU (the bias-compensated vehicle-frame
-// IMU of that epoch). Both follow the pose rate, not the IMU rate, because a replay runs
-// hundreds of times faster than real time: a 200 Hz IMU stream arrives as a burst of tens of
-// thousands of datagrams that LCM's udpm receivers drop (seen here: 3 of 4 lost for a
-// 20 s log), taking poses with them. Even so a subscriber only keeps up with bursts of about a
-// hundred datagrams (Linux's default socket receive buffer); --rate sets how many go out.
-// NAVFUSE_STATUS and NAVFUSE_GNSS belong to the live process (`navfuse run`).
+// `navfuse replay --lcm [URL]`: the replayed solution on the nav process's channels, published
+// as `navfuse run` publishes them (LcmPublisher::publish_epoch): at each pose output time
+// NAVFUSE_POSE and NAVFUSE_IMU (the bias-compensated vehicle-frame IMU of that epoch). Both
+// follow the pose rate, not the IMU rate, which matters most here: a replay runs hundreds of
+// times faster than real time, and a 200 Hz stream would arrive as a burst of tens of thousands
+// of datagrams that LCM's udpm receivers drop (seen here: 3 of 4 lost for a 20 s log). Even so a
+// subscriber only keeps up with bursts of about a hundred datagrams (Linux's default socket
+// receive buffer); --rate sets how many go out. NAVFUSE_STATUS and NAVFUSE_GNSS are published
+// by `navfuse run` only.
 #pragma once
 
 #include <cstdint>
@@ -23,7 +24,7 @@ class LcmPoseWriter final : public PoseWriter {
   // `url` empty: LCM's default (LCM_DEFAULT_URL or udpm). Throws CommandError when LCM cannot
   // be opened.
   explicit LcmPoseWriter(const std::string& url);
-  void on_pose(const PoseEpoch& epoch) override;
+  void write(const OutputEpoch& epoch) override;
   void commit() override {}  // every message is already out
 
   std::uint64_t published() const { return publisher_.published(); }
@@ -32,7 +33,6 @@ class LcmPoseWriter final : public PoseWriter {
  private:
   lcm::LCM lcm_;
   LcmPublisher publisher_;
-  ImuSample imu_;  // reused: no allocation per sample
 };
 
 }  // namespace navfuse::apps

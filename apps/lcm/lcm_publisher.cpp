@@ -5,7 +5,7 @@
 
 namespace navfuse::apps {
 
-LcmPublisher::LcmPublisher(lcm::LCM& lcm, const Eigen::Matrix3d& c_vs) : lcm_(lcm), c_vs_(c_vs) {
+LcmPublisher::LcmPublisher(lcm::LCM& lcm) : lcm_(lcm) {
   buffer_.reserve(1024);  // pose_t, imu_t and gnss_t all fit; status_t grows it once if needed
 }
 
@@ -31,9 +31,11 @@ bool LcmPublisher::publish_pose(const NavSolution& s) {
   return send(kPoseChannel, pose_);
 }
 
-bool LcmPublisher::publish_imu(const ImuSample& s) {
-  if (!fill_imu(s, c_vs_, imu_)) return false;
-  return send(kImuChannel, imu_);
+bool LcmPublisher::publish_epoch(const OutputEpoch& epoch) {
+  if (!publishes(epoch)) return false;
+  const bool pose = publish_pose(epoch.solution);
+  if (fill_imu(epoch.solution, imu_)) send(kImuChannel, imu_);
+  return pose;
 }
 
 bool LcmPublisher::publish_gnss(const GnssPosition& p, const GnssVelocity* v) {

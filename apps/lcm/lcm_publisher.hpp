@@ -1,7 +1,8 @@
 // Publishes the engine's streams on LCM (DESIGN.md channels NAVFUSE_POSE, NAVFUSE_STATUS,
 // NAVFUSE_IMU, NAVFUSE_GNSS) through a caller-owned lcm::LCM. Synchronous and single-threaded
-// on purpose: `navfuse replay --lcm` can publish from its own loop, and the nav process calls it
-// from the one thread that owns its LCM handle.
+// on purpose: `navfuse replay --lcm` publishes from its output thread, and the nav process
+// (`navfuse run --lcm`) from the one thread that owns its LCM handle. Both publish output epochs
+// through publish_epoch(), so each channel means the same in both (core/lcm/*.lcm).
 //
 // Messages are encoded into buffers owned here and handed to lcm_publish() directly, because
 // lcm::LCM::publish(channel, msg) allocates a buffer per message (lcm-cpp-impl.hpp).
@@ -10,9 +11,9 @@
 #include <cstdint>
 #include <vector>
 
-#include <Eigen/Core>
 #include <lcm/lcm-cpp.hpp>
 
+#include "apps/fusion/output_epoch.hpp"
 #include "core/measurements/measurements.hpp"
 #include "navfuse/gnss_t.hpp"
 #include "navfuse/imu_t.hpp"
@@ -23,13 +24,15 @@ namespace navfuse::apps {
 
 class LcmPublisher {
  public:
-  // `c_vs`: the configured sensor -> vehicle mounting, for NAVFUSE_IMU (vehicle frame).
-  explicit LcmPublisher(lcm::LCM& lcm, const Eigen::Matrix3d& c_vs = Eigen::Matrix3d::Identity());
+  explicit LcmPublisher(lcm::LCM& lcm);
 
-  // Each returns false when nothing was published: LCM refused the message (counted in
-  // failures()), or, for publish_imu, increments without an interval cannot be given as rates.
+  // Whether publish_epoch() sends anything for `epoch`: only pose epochs (output.rate_hz).
+  static bool publishes(const OutputEpoch& epoch) { return epoch.pose_due; }
+  // At a pose epoch: NAVFUSE_POSE, then NAVFUSE_IMU (the filter's bias-compensated IMU of the
+  // same epoch, once the attitude is known). True when the pose went out.
+  bool publish_epoch(const OutputEpoch& epoch);
+  // Each returns false when LCM refused the message (counted in failures()).
   bool publish_pose(const NavSolution& s);
-  bool publish_imu(const ImuSample& s);
   bool publish_gnss(const GnssPosition& p, const GnssVelocity* v);
   bool publish_status(const navfuse::status_t& status);
 
@@ -41,7 +44,6 @@ class LcmPublisher {
   bool send(const char* channel, const Message& msg);
 
   lcm::LCM& lcm_;
-  Eigen::Matrix3d c_vs_;
   navfuse::pose_t pose_{};
   navfuse::imu_t imu_{};
   navfuse::gnss_t gnss_{};

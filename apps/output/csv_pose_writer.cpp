@@ -48,7 +48,8 @@ CsvPoseWriter::CsvPoseWriter(const std::string& path) : file_(path) {
   row_.reserve(512);
 }
 
-void CsvPoseWriter::on_pose(const PoseEpoch& epoch) {
+void CsvPoseWriter::write(const OutputEpoch& epoch) {
+  if (!epoch.pose_due) return;
   const NavSolution& s = epoch.solution;
   constexpr double d = rot::kRadToDeg;
   row_.clear();

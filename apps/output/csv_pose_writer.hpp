@@ -21,7 +21,7 @@ namespace navfuse::apps {
 class CsvPoseWriter final : public PoseWriter {
  public:
   explicit CsvPoseWriter(const std::string& path);
-  void on_pose(const PoseEpoch& epoch) override;
+  void write(const OutputEpoch& epoch) override;  // a row at each pose epoch
   void commit() override { file_.commit(); }
 
  private:

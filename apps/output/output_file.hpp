@@ -1,9 +1,19 @@
-// A binary or text output file that only appears under its final name when complete.
+// A binary or text output of a command (replay --fe-out/--mip-out/--csv, sim --out, ...). What is
+// at the path decides how it is written, so that navfuse never replaces what it did not create:
 //
-// Bytes go to "<path>.partial" through a large stdio buffer; commit() flushes, closes and renames
-// it onto `path` (rename(2) is atomic within a file system, so a reader sees either the old file
-// or the whole new one). Destroying an uncommitted OutputFile (an error or exception unwound the
-// run) deletes the partial file, so nothing half-written is left looking complete.
+//  - A regular file, or nothing yet: bytes go to "<path>.partial" through a large stdio buffer;
+//    commit() flushes, closes and renames it onto the path (rename(2) is atomic within a file
+//    system, so a reader sees either the old file or the whole new one). Destroying an
+//    uncommitted OutputFile (an error unwound the run) deletes the partial file, so nothing
+//    half-written is left looking complete. A symbolic link to a regular file is followed: its
+//    target is replaced that way and the link stays.
+//  - Anything else, written in place and streaming, never renamed or removed: a device node, a
+//    FIFO, a socket, a link to one of those, "-" (standard output), and every path under /dev
+//    or /proc (/dev/stdout, /dev/null, /dev/fd/N: the system's, whatever they point at).
+//
+// Every write error (ENOSPC, EPIPE, EIO, ...) is a CommandError naming the path and the reason,
+// from write() or at the latest from commit(). A pipe whose reader went away gives EPIPE only
+// when SIGPIPE is ignored, as main() does.
 #pragma once
 
 #include <cstdint>
@@ -17,7 +27,8 @@ namespace navfuse::apps {
 
 class OutputFile {
  public:
-  // Opens "<path>.partial" for writing; throws CommandError naming `path` when it cannot.
+  // Opens the output (see above); throws CommandError naming `path` when it cannot. Opening a
+  // FIFO waits for a reader, as open(2) does.
   explicit OutputFile(std::string path);
   ~OutputFile();
   OutputFile(const OutputFile&) = delete;
@@ -25,17 +36,21 @@ class OutputFile {
 
   void write(std::span<const std::uint8_t> bytes);
   void write(std::string_view text);
-  // Flushes and renames onto the final path; throws CommandError on any write error.
+  // Flushes (and for a regular file renames onto the final path); throws CommandError on any
+  // write error.
   void commit();
 
   const std::string& path() const { return path_; }
   std::uint64_t bytes_written() const { return bytes_; }
+  // True when written in place (not a regular file): nothing is renamed or removed.
+  bool in_place() const { return partial_path_.empty(); }
 
  private:
-  void fail(const char* what);
+  [[noreturn]] void fail(const char* what, int error);
 
-  std::string path_;
-  std::string partial_path_;
+  std::string path_;          // as given, for messages
+  std::string final_path_;    // what commit() renames onto (a link's target)
+  std::string partial_path_;  // empty when written in place
   std::FILE* file_ = nullptr;
   std::vector<char> buffer_;
   std::uint64_t bytes_ = 0;

@@ -21,9 +21,8 @@ PoseOutputThread::PoseOutputThread(PoseOutputs& outputs) : outputs_(outputs) {
 
 PoseOutputThread::~PoseOutputThread() { stop_thread(); }
 
-void PoseOutputThread::post(const NavSolution& s, bool pose_due, std::uint64_t gnss_fused_total,
-                            std::uint8_t num_sats) {
-  filling_.push_back({s, pose_due, gnss_fused_total, num_sats});
+void PoseOutputThread::post(const OutputEpoch& epoch) {
+  filling_.push_back(epoch);
   if (filling_.size() >= kBatchEpochs) hand_over();
 }
 
@@ -59,10 +58,7 @@ void PoseOutputThread::run() {
       full_.pop_front();
     }
     try {
-      for (const Epoch& e : batch) {
-        outputs_.on_imu(e.solution);
-        if (e.pose_due) outputs_.on_pose(e.solution, e.gnss_fused_total, e.num_sats);
-      }
+      for (const OutputEpoch& e : batch) outputs_.write(e);
     } catch (...) {
       std::lock_guard lock(mutex_);
       error_ = std::current_exception();

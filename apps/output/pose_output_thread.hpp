@@ -10,7 +10,6 @@
 #pragma once
 
 #include <condition_variable>
-#include <cstdint>
 #include <deque>
 #include <exception>
 #include <mutex>
@@ -31,22 +30,15 @@ class PoseOutputThread {
   PoseOutputThread(const PoseOutputThread&) = delete;
   PoseOutputThread& operator=(const PoseOutputThread&) = delete;
 
-  // One IMU epoch: PoseOutputs::on_imu(s), then on_pose(...) when `pose_due`. Rethrows (as
-  // CommandError) a write error the thread met.
-  void post(const NavSolution& s, bool pose_due, std::uint64_t gnss_fused_total, std::uint8_t num_sats);
-  void post(const OutputEpoch& e) { post(e.solution, e.pose_due, e.gnss_fused_total, e.num_sats); }
+  // One output epoch, for PoseOutputs::write. Rethrows (as CommandError) a write error the
+  // thread met.
+  void post(const OutputEpoch& epoch);
   // Writes everything posted, stops the thread and rethrows a write error if there was one.
   // The writers are then ready for PoseOutputs::commit() on this thread.
   void finish();
 
  private:
-  struct Epoch {
-    NavSolution solution;
-    bool pose_due = false;
-    std::uint64_t gnss_fused_total = 0;
-    std::uint8_t num_sats = 0;
-  };
-  using Batch = std::vector<Epoch>;
+  using Batch = std::vector<OutputEpoch>;
 
   void hand_over();  // the batch being filled -> the writer thread
   void run();        // the writer thread

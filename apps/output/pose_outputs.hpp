@@ -1,5 +1,5 @@
-// The pose outputs of one run (--fe-out, --mip-out, --csv): every writer sees every IMU epoch
-// and every pose epoch. The caller decides when a pose is due (OutputRate).
+// The outputs of one replay (--fe-out, --mip-out, --csv, --lcm): every writer sees every output
+// epoch and decides itself what it writes at it.
 #pragma once
 
 #include <memory>
@@ -14,15 +14,8 @@ class PoseOutputs {
   void add(std::unique_ptr<PoseWriter> writer) { writers_.push_back(std::move(writer)); }
   bool empty() const { return writers_.empty(); }
 
-  void on_imu(const NavSolution& s) {
-    for (auto& w : writers_) w->on_imu(s);
-  }
-  // `gnss_fused_total` is the running count of fused GNSS positions: GNSSInfo goes out at the
-  // first pose after it changes. `num_sats` is that of the newest fix.
-  void on_pose(const NavSolution& s, std::uint64_t gnss_fused_total, std::uint8_t num_sats) {
-    const PoseEpoch epoch{s, gnss_fused_total != gnss_at_last_pose_, num_sats};
-    gnss_at_last_pose_ = gnss_fused_total;
-    for (auto& w : writers_) w->on_pose(epoch);
+  void write(const OutputEpoch& epoch) {
+    for (auto& w : writers_) w->write(epoch);
   }
   void commit() {
     for (auto& w : writers_) w->commit();
@@ -30,7 +23,6 @@ class PoseOutputs {
 
  private:
   std::vector<std::unique_ptr<PoseWriter>> writers_;
-  std::uint64_t gnss_at_last_pose_ = 0;
 };
 
 }  // namespace navfuse::apps

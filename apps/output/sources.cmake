@@ -1,7 +1,12 @@
-# apps/output: pose writers (FusionEngine, MIP 0x82, CSV) on top of the front-ends' encoders.
+# apps/output: the output layer of replay, bench and run: one epoch encoder per protocol
+# (FusionEngine, MIP 0x82) on top of the front-ends' encoders, the file writers (those encoders,
+# CSV) and the output thread of replay.
 target_sources(navfuse_apps PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/compensated_imu.cpp
   ${CMAKE_CURRENT_LIST_DIR}/csv_pose_writer.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/fe_pose_writer.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/mip_pose_writer.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/fe_epoch_encoder.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/fe_stream_rates.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/mip_epoch_encoder.cpp
   ${CMAKE_CURRENT_LIST_DIR}/output_file.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/output_paths.cpp
   ${CMAKE_CURRENT_LIST_DIR}/pose_output_thread.cpp)

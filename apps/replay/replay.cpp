@@ -8,8 +8,8 @@
 #include "apps/common/input_spec.hpp"
 #include "apps/lcm/lcm_pose_writer.hpp"
 #include "apps/output/csv_pose_writer.hpp"
-#include "apps/output/fe_pose_writer.hpp"
-#include "apps/output/mip_pose_writer.hpp"
+#include "apps/output/encoded_file_writer.hpp"
+#include "apps/output/output_paths.hpp"
 #include "apps/output/pose_output_thread.hpp"
 #include "apps/output/pose_outputs.hpp"
 #include "apps/fusion/fusion_runner.hpp"
@@ -76,12 +76,17 @@ ReplayResult run_replay(const ReplayOptions& options) {
   if (!(rate_hz >= 0.0)) throw CommandError("output rate must be >= 0 Hz (0 = every IMU sample)");
 
   // Everything that can fail on bad arguments is opened before the (long) run starts.
+  std::vector<std::string> input_paths;
+  for (const InputSpec& spec : specs) input_paths.push_back(spec.path);
+  if (!options.truth_path.empty()) input_paths.push_back(options.truth_path);
+  check_output_paths(input_paths,
+                     {{"--fe-out", options.fe_out}, {"--mip-out", options.mip_out}, {"--csv", options.csv_out}});
   MeasurementMerger merger(specs, {.chunk_bytes = 16 * 1024, .allow_truncated = options.allow_truncated});
   std::unique_ptr<TruthAccuracy> accuracy;
   if (!options.truth_path.empty()) accuracy = std::make_unique<TruthAccuracy>(options.truth_path);
   PoseOutputs outputs;
-  if (!options.fe_out.empty()) outputs.add(std::make_unique<FePoseWriter>(options.fe_out));
-  if (!options.mip_out.empty()) outputs.add(std::make_unique<MipPoseWriter>(options.mip_out));
+  if (!options.fe_out.empty()) outputs.add(std::make_unique<FeFileWriter>(options.fe_out));
+  if (!options.mip_out.empty()) outputs.add(std::make_unique<MipFileWriter>(options.mip_out));
   if (!options.csv_out.empty()) outputs.add(std::make_unique<CsvPoseWriter>(options.csv_out));
   const LcmPoseWriter* lcm = nullptr;
   if (options.lcm_url) {

@@ -19,10 +19,9 @@ constexpr int kIdlePollMs = 200;               // only bounds how late a stop() 
 
 }  // namespace
 
-LcmService::LcmService(const std::string& url, const Eigen::Matrix3d& c_vs, MeasurementQueue& aiding_queue,
-                       LatencyTracker& latency)
+LcmService::LcmService(const std::string& url, MeasurementQueue& aiding_queue, LatencyTracker& latency)
     : lcm_(url),
-      publisher_(lcm_, c_vs),
+      publisher_(lcm_),
       aiding_queue_(aiding_queue),
       latency_(latency),
       outbox_(kOutboxCapacity),
@@ -59,15 +58,9 @@ bool LcmService::post(const Outgoing& item) {
   return true;
 }
 
-bool LcmService::post_pose(const NavSolution& s, std::int64_t imu_arrival_ns) {
-  auto& out = scratch_.emplace<lcm_outbox::Pose>();
-  out.solution = s;
-  out.arrival_ns = imu_arrival_ns;
-  return post(scratch_);
-}
-
-bool LcmService::post_imu(const ImuSample& s) {
-  scratch_.emplace<ImuSample>(s);
+bool LcmService::post_epoch(const OutputEpoch& epoch) {
+  if (!LcmPublisher::publishes(epoch)) return true;
+  scratch_.emplace<OutputEpoch>(epoch);
   return post(scratch_);
 }
 
@@ -117,10 +110,8 @@ void LcmService::publish_pending() {
 }
 
 void LcmService::publish(const Outgoing& item) {
-  if (const auto* pose = std::get_if<lcm_outbox::Pose>(&item)) {
-    if (publisher_.publish_pose(pose->solution)) latency_.record(monotonic_ns() - pose->arrival_ns);
-  } else if (const auto* imu = std::get_if<ImuSample>(&item)) {
-    publisher_.publish_imu(*imu);
+  if (const auto* epoch = std::get_if<OutputEpoch>(&item)) {
+    if (publisher_.publish_epoch(*epoch)) latency_.record(monotonic_ns() - epoch->arrival_ns);
   } else if (const auto* gnss = std::get_if<lcm_outbox::Gnss>(&item)) {
     publisher_.publish_gnss(gnss->position, gnss->has_velocity ? &gnss->velocity : nullptr);
   }

@@ -1,7 +1,9 @@
 // The nav process's LCM thread (`navfuse run --lcm [URL]`). It owns the lcm::LCM handle — LCM
 // handles are serviced from one thread — and does both directions:
-//  - publishes what the filter thread posts (NAVFUSE_POSE, NAVFUSE_IMU, NAVFUSE_GNSS,
-//    NAVFUSE_STATUS), recording for each pose the latency since its IMU sample arrived;
+//  - publishes what the filter thread posts: output epochs (NAVFUSE_POSE and NAVFUSE_IMU at the
+//    pose rate, through LcmPublisher::publish_epoch as `replay --lcm` does), GNSS fixes
+//    (NAVFUSE_GNSS) and status (NAVFUSE_STATUS), recording for each pose the latency since its
+//    IMU sample arrived;
 //  - receives aiding on NAVFUSE_AID_* and queues it for the filter like any input.
 // Posting never waits: the outbox is bounded and a full one drops (counted), so a stalled LCM
 // send can never hold up the filter. The thread sleeps in poll(2) on the LCM socket and an
@@ -17,11 +19,11 @@
 #include <thread>
 #include <variant>
 
-#include <Eigen/Core>
 #include <lcm/lcm-cpp.hpp>
 
 #include "apps/lcm/lcm_aiding_subscriber.hpp"
 #include "apps/lcm/lcm_publisher.hpp"
+#include "apps/fusion/output_epoch.hpp"
 #include "apps/run/arrived_measurement.hpp"
 #include "apps/run/latency_tracker.hpp"
 #include "core/io/unique_fd.hpp"
@@ -29,13 +31,9 @@
 
 namespace navfuse::apps {
 
-// What the filter thread posts for publication (outside LcmService: a variant of nested classes
-// with member initialisers cannot be default-constructed inside the enclosing class).
+// A GNSS fix posted for publication (outside LcmService: a variant of nested classes with member
+// initialisers cannot be default-constructed inside the enclosing class).
 namespace lcm_outbox {
-struct Pose {
-  NavSolution solution;
-  std::int64_t arrival_ns = 0;
-};
 struct Gnss {
   GnssPosition position;
   GnssVelocity velocity;
@@ -46,9 +44,7 @@ struct Gnss {
 class LcmService {
  public:
   // Opens LCM at `url` ("" = LCM's default); throws CommandError naming the URL if it cannot.
-  // `c_vs` is the configured sensor -> vehicle mounting (NAVFUSE_IMU is in the vehicle frame).
-  LcmService(const std::string& url, const Eigen::Matrix3d& c_vs, MeasurementQueue& aiding_queue,
-             LatencyTracker& latency);
+  LcmService(const std::string& url, MeasurementQueue& aiding_queue, LatencyTracker& latency);
   ~LcmService();
   LcmService(const LcmService&) = delete;
   LcmService& operator=(const LcmService&) = delete;
@@ -58,8 +54,8 @@ class LcmService {
   void stop();
 
   // Called by one thread, the filter's; each returns false when the message was dropped.
-  bool post_pose(const NavSolution& s, std::int64_t imu_arrival_ns);
-  bool post_imu(const ImuSample& s);
+  // Every output epoch may be posted; only those LcmPublisher publishes are queued.
+  bool post_epoch(const OutputEpoch& epoch);
   bool post_gnss(const GnssPosition& p, const GnssVelocity* v);
   // Only the newest status is kept: a status that could not go out yet is superseded.
   void post_status(navfuse::status_t status);
@@ -69,7 +65,7 @@ class LcmService {
   std::uint64_t aiding_dropped() const { return aiding_dropped_.load(std::memory_order_relaxed); }
 
  private:
-  using Outgoing = std::variant<lcm_outbox::Pose, ImuSample, lcm_outbox::Gnss>;
+  using Outgoing = std::variant<OutputEpoch, lcm_outbox::Gnss>;
 
   bool post(const Outgoing& item);
   void wake();

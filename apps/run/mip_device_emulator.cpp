@@ -4,7 +4,6 @@
 #include "frontends/mip/commands.hpp"
 #include "filter/engine.hpp"
 #include "frontends/mip/packet.hpp"
-#include "frontends/mip/solution_encoder.hpp"
 
 namespace navfuse::apps {
 namespace {
@@ -28,8 +27,8 @@ Eigen::Vector3d read_vec3f(bytes::Reader<bytes::Endian::kBig>& r) {
 
 void MipDeviceEmulator::stream(const OutputEpoch& epoch, std::vector<std::uint8_t>& out) {
   last_epoch_gps_ns_ = epoch.solution.header.time_ns;
-  if (!epoch.pose_due || responder_.idle() || !responder_.stream_enabled(mip::set::kFilter)) return;
-  mip::encode_solution(epoch.solution, out);
+  if (responder_.idle() || !responder_.stream_enabled(mip::set::kFilter)) return;
+  encoder_.append(epoch, out);
 }
 
 mip::Framer& MipDeviceEmulator::framer_for(io::PeerId peer) {

@@ -1,6 +1,6 @@
-// --mip-out: navfuse as a CV7 on the link. Streams the filter data set 0x82 (one packet group per
-// pose, frontends/mip/solution_encoder.hpp) unless a client disabled that stream or set the
-// device idle, and answers MIP commands as the CV7 does (frontends/mip/command_responder.hpp):
+// --mip-out: navfuse as a CV7 on the link. Streams what replay's --mip-out file holds (the filter
+// data set 0x82 at each pose, apps/output/mip_epoch_encoder.hpp) unless a client disabled that
+// stream or set the device idle, and answers MIP commands as the CV7 does (frontends/mip/command_responder.hpp):
 // external aiding (0x13) is handed to the filter, and the filter commands with an effect on the
 // estimate — reset (0x0D,0x01), sensor-to-vehicle rotation (0x0C,0x31), antenna offsets
 // (0x0D,0x54) — are applied to the engine as well as being acknowledged.
@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "apps/output/mip_epoch_encoder.hpp"
 #include "apps/run/device_emulator.hpp"
 #include "frontends/mip/command_responder.hpp"
 #include "frontends/mip/framer.hpp"
@@ -33,6 +34,7 @@ class MipDeviceEmulator final : public DeviceEmulator {
   void engine_effects(const frontends::mip::PacketView& packet, CommandEffects& effects) const;
 
   frontends::mip::CommandResponder responder_;
+  MipEpochEncoder encoder_;
   std::map<io::PeerId, std::unique_ptr<frontends::mip::Framer>> framers_;  // one per client
   std::int64_t last_epoch_gps_ns_ = 0;  // "time of arrival" of 0x13 timebase-3 aiding
   std::vector<std::uint8_t> packet_reply_;

@@ -3,11 +3,9 @@
 #include <chrono>
 
 #include "apps/common/command_error.hpp"
-#include "apps/output/fe_pose_writer.hpp"
 #include "apps/run/fe_device_emulator.hpp"
 #include "apps/run/mip_device_emulator.hpp"
 #include "apps/run/run_log.hpp"
-#include "core/rotation/rotation.hpp"
 
 namespace navfuse::apps {
 namespace {
@@ -28,11 +26,6 @@ config::Config load_config(const std::string& path) {
   } catch (const config::ConfigError& e) {
     throw CommandError(e.what());
   }
-}
-
-Eigen::Matrix3d mounting_of(const config::Config& c) {
-  const auto& m = c.imu.mounting_rpy_deg;
-  return rot::dcm_from_rpy(Eigen::Vector3d(m[0], m[1], m[2]) * rot::kDegToRad);
 }
 
 }  // namespace
@@ -77,7 +70,7 @@ NavProcess::NavProcess(const RunOptions& options)
     outputs_.push_back(
         std::make_unique<OutputSink>("--mip-out", mip_uri, std::make_unique<MipDeviceEmulator>(), queue_, actions_));
   }
-  if (options_.lcm) lcm_ = std::make_unique<LcmService>(options_.lcm_url, mounting_of(config_), queue_, latency_);
+  if (options_.lcm) lcm_ = std::make_unique<LcmService>(options_.lcm_url, queue_, latency_);
   for (const auto& in : inputs_) snapshots_.push_back({in->name(), {}});
 }
 
@@ -137,11 +130,7 @@ void NavProcess::on_fused(const Measurement& m) {
 
 void NavProcess::on_epoch(const OutputEpoch& epoch, const filter::Engine&) {
   for (auto& out : outputs_) out->post(epoch);
-  if (lcm_ && epoch.pose_due) {
-    // NAVFUSE_IMU: the filter's compensated IMU with each pose (core/lcm/imu_t.lcm), as replay.
-    if (compensated_imu_from(epoch.solution, lcm_imu_)) lcm_->post_imu(lcm_imu_);
-    lcm_->post_pose(epoch.solution, epoch.arrival_ns);
-  }
+  if (lcm_) lcm_->post_epoch(epoch);
 }
 
 void NavProcess::track_gnss(const Measurement& m) {

@@ -5,7 +5,7 @@
 //   output threads (MIP 0x13)    --aiding-------->--------'               |
 //   output threads (FE/MIP commands) --engine actions--> filter thread    |
 //   filter thread --epochs--> output threads (--fe-out, --mip-out, each its own link)
-//   filter thread --poses, IMU, GNSS, status--> LCM thread (NAVFUSE_POSE/IMU/GNSS/STATUS)
+//   filter thread --epochs, GNSS, status--> LCM thread (NAVFUSE_POSE/IMU/GNSS/STATUS)
 //
 // Only the filter thread touches the engine. Every arrow into a consumer that may be slow is a
 // bounded queue that drops (and counts) rather than waits, so nothing downstream can stall the
@@ -77,7 +77,6 @@ class NavProcess final : private FusionObserver {
   std::vector<InputSnapshot> snapshots_;
   GnssPosition pending_fix_;  // waiting for the velocity of the same epoch (NAVFUSE_GNSS)
   bool fix_pending_ = false;
-  ImuSample lcm_imu_;  // reused: no allocation per epoch
   std::int64_t next_status_ns_ = 0;
   std::int64_t started_ns_ = 0;
   std::int64_t stopped_ns_ = 0;

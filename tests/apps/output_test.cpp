@@ -1,17 +1,20 @@
-// Pose outputs: decimation grid, all-or-nothing files, CSV rows and the IMUOutput rebuilt from a
-// solution, against hand-computed values.
+// Outputs: decimation grid, CSV rows, the IMUOutput rebuilt from a
+// solution (against hand-computed values), and what the epoch encoders send at which epoch
+// (against the DESIGN.md --fe-out / --mip-out contract).
 #include <cmath>
 #include <filesystem>
-#include <stdexcept>
 
 #include <gtest/gtest.h>
 
-#include "apps/common/command_error.hpp"
+#include "apps/output/compensated_imu.hpp"
 #include "apps/output/csv_pose_writer.hpp"
-#include "apps/output/fe_pose_writer.hpp"
-#include "apps/output/output_file.hpp"
+#include "apps/output/encoded_file_writer.hpp"
+#include "apps/output/fe_epoch_encoder.hpp"
+#include "apps/output/mip_epoch_encoder.hpp"
 #include "apps/output/output_rate.hpp"
 #include "core/rotation/rotation.hpp"
+#include "frontends/fusionengine/framer.hpp"
+#include "frontends/mip/framer.hpp"
 #include "test_files.hpp"
 
 namespace navfuse::apps {
@@ -43,42 +46,6 @@ TEST(OutputRate, FirstSampleAtOrAfterEachGridPoint) {
   EXPECT_FALSE(rate.due(1'360'000'000));
 }
 
-TEST(OutputFile, AppearsOnlyOnCommit) {
-  const auto dir = scratch_dir();
-  const auto path = dir / "out.bin";
-  {
-    OutputFile f(path.string());
-    f.write(std::string_view("abc"));
-    EXPECT_FALSE(std::filesystem::exists(path));
-    EXPECT_TRUE(std::filesystem::exists(path.string() + ".partial"));
-    f.commit();
-  }
-  EXPECT_EQ(read_text(path), "abc");
-  EXPECT_FALSE(std::filesystem::exists(path.string() + ".partial"));
-}
-
-TEST(OutputFile, AbandonedFileLeavesNothing) {
-  const auto dir = scratch_dir();
-  const auto path = dir / "out.bin";
-  try {
-    OutputFile f(path.string());
-    f.write(std::string_view("half"));
-    throw std::runtime_error("run failed");
-  } catch (const std::runtime_error&) {
-  }
-  EXPECT_FALSE(std::filesystem::exists(path));
-  EXPECT_FALSE(std::filesystem::exists(path.string() + ".partial"));
-}
-
-TEST(OutputFile, UnwritableDirectoryIsACommandErrorNamingThePath) {
-  try {
-    OutputFile f("/nonexistent-dir/out.bin");
-    FAIL() << "expected an error";
-  } catch (const CommandError& e) {
-    EXPECT_NE(std::string(e.what()).find("/nonexistent-dir/out.bin"), std::string::npos);
-  }
-}
-
 TEST(CsvPoseWriter, RowHasExactTimeAndFixedDecimals) {
   const auto dir = scratch_dir();
   NavSolution s;
@@ -95,7 +62,10 @@ TEST(CsvPoseWriter, RowHasExactTimeAndFixedDecimals) {
   s.att_std_rpy_rad = Eigen::Vector3d(0.1, 0.1, 0.5) * rot::kDegToRad;
   {
     CsvPoseWriter w((dir / "p.csv").string());
-    w.on_pose(PoseEpoch{s});
+    OutputEpoch e{.solution = s};
+    w.write(e);  // not a pose epoch: no row
+    e.pose_due = true;
+    w.write(e);
     w.commit();
   }
   const std::string text = read_text(dir / "p.csv");
@@ -130,6 +100,113 @@ TEST(CompensatedImu, NoAttitudeNoSample) {
   NavSolution s;
   ImuSample imu;
   EXPECT_FALSE(compensated_imu_from(s, imu));
+}
+
+// A solution whose attitude is known, so that IMUOutput can be rebuilt from it.
+NavSolution attitude_solution(std::int64_t time_ns) {
+  NavSolution s;
+  s.header.time_ns = time_ns;
+  s.header.time_source = TimeSource::kGps;
+  s.header.valid = NavSolution::kValidAttitude | NavSolution::kValidPosition;
+  s.gravity_ned_mps2 = {0.0, 0.0, 9.8};
+  return s;
+}
+
+struct FeFrameSeen {
+  std::uint16_t type;
+  std::uint32_t sequence;
+};
+
+std::vector<FeFrameSeen> fe_frames(const std::vector<std::uint8_t>& bytes) {
+  std::vector<FeFrameSeen> seen;
+  fe::Framer framer;
+  framer.feed(bytes, [&](const fe::Frame& f) { seen.push_back({f.header.message_type, f.header.sequence}); });
+  EXPECT_EQ(framer.buffered_bytes(), 0u);
+  return seen;
+}
+
+std::vector<std::uint16_t> types_of(const std::vector<FeFrameSeen>& frames) {
+  std::vector<std::uint16_t> types;
+  for (const auto& f : frames) types.push_back(f.type);
+  return types;
+}
+
+constexpr std::uint16_t kPose = 10000, kGnssInfo = 10001, kPoseAux = 10003, kImuOutput = 11000;
+
+TEST(FeEpochEncoder, DefaultRatesAreTheContract) {
+  FeEpochEncoder encoder;
+  std::vector<std::uint8_t> out;
+  // IMU epoch without a pose: IMUOutput only.
+  encoder.append(OutputEpoch{.solution = attitude_solution(1'000'000'000)}, out);
+  // Pose epoch, no new GNSS: IMUOutput, Pose, PoseAux.
+  encoder.append(OutputEpoch{.solution = attitude_solution(1'005'000'000), .pose_due = true, .gnss_fused_total = 0}, out);
+  // Pose epoch after a fix was fused: GNSSInfo as well.
+  encoder.append(OutputEpoch{.solution = attitude_solution(1'010'000'000), .pose_due = true, .gnss_updated = true,
+                             .gnss_fused_total = 1, .num_sats = 9},
+                 out);
+  const auto frames = fe_frames(out);
+  EXPECT_EQ(types_of(frames), (std::vector<std::uint16_t>{kImuOutput, kImuOutput, kPose, kPoseAux, kImuOutput, kPose,
+                                                          kPoseAux, kGnssInfo}));
+  for (std::size_t i = 0; i < frames.size(); ++i) EXPECT_EQ(frames[i].sequence, i) << "one counter for the stream";
+}
+
+TEST(FeEpochEncoder, NoImuOutputBeforeTheAttitudeIsKnown) {
+  FeEpochEncoder encoder;
+  std::vector<std::uint8_t> out;
+  OutputEpoch e{.solution = attitude_solution(1'000'000'000), .pose_due = true};
+  e.solution.header.valid = NavSolution::kValidPosition;
+  encoder.append(e, out);
+  EXPECT_EQ(types_of(fe_frames(out)), (std::vector<std::uint16_t>{kPose, kPoseAux}));
+}
+
+TEST(FeEpochEncoder, RatesSetByAClientApply) {
+  FeEpochEncoder encoder;
+  ASSERT_TRUE(encoder.rates().set(kImuOutput, fe::MessageRate::kOff));
+  ASSERT_TRUE(encoder.rates().set(kPoseAux, fe::MessageRate::kOff));
+  ASSERT_TRUE(encoder.rates().set(kGnssInfo, fe::MessageRate::kOnChange));
+  ASSERT_TRUE(encoder.rates().set(kPose, fe::MessageRate::k100Ms));
+  EXPECT_FALSE(encoder.rates().set(12345, fe::MessageRate::kOff)) << "not a message navfuse streams";
+  std::vector<std::uint8_t> out;
+  // 200 Hz epochs over 0.2 s, none a pose epoch by output.rate_hz; one fix fused at 50 ms.
+  for (int k = 0; k < 40; ++k) {
+    encoder.append(OutputEpoch{.solution = attitude_solution(2'000'000'000LL + k * 5'000'000LL),
+                               .gnss_fused_total = k >= 10 ? 1u : 0u},
+                   out);
+  }
+  // Pose on the 100 ms grid (2.0 s, 2.1 s), GNSSInfo once, when the fix count changed.
+  EXPECT_EQ(types_of(fe_frames(out)), (std::vector<std::uint16_t>{kPose, kGnssInfo, kPose}));
+}
+
+TEST(MipEpochEncoder, FilterPacketsAtPoseEpochsOnly) {
+  MipEpochEncoder encoder;
+  std::vector<std::uint8_t> out;
+  encoder.append(OutputEpoch{.solution = attitude_solution(1'000'000'000)}, out);
+  EXPECT_TRUE(out.empty());
+  encoder.append(OutputEpoch{.solution = attitude_solution(1'005'000'000), .pose_due = true}, out);
+  std::size_t filter_packets = 0;
+  frontends::mip::Framer framer;
+  framer.feed(out, [&](const frontends::mip::PacketView& p) { filter_packets += p.desc_set == 0x82 ? 1 : 0; });
+  EXPECT_GE(filter_packets, 1u);
+  EXPECT_EQ(framer.counters().skipped_bytes, 0u);
+}
+
+TEST(EncodedFileWriter, FileHoldsExactlyTheEncoderBytes) {
+  const auto dir = scratch_dir();
+  std::vector<OutputEpoch> epochs;
+  for (int k = 0; k < 6; ++k) {
+    epochs.push_back(OutputEpoch{.solution = attitude_solution(1'000'000'000LL + k * 5'000'000LL), .pose_due = k % 2 == 0,
+                                 .gnss_updated = k == 4, .gnss_fused_total = k >= 4 ? 1u : 0u});
+  }
+  std::vector<std::uint8_t> expected;
+  FeEpochEncoder encoder;
+  for (const auto& e : epochs) encoder.append(e, expected);
+  {
+    FeFileWriter w((dir / "out.p1log").string());
+    for (const auto& e : epochs) w.write(e);
+    w.commit();
+  }
+  const std::string text = read_text(dir / "out.p1log");
+  EXPECT_EQ(std::vector<std::uint8_t>(text.begin(), text.end()), expected);
 }
 
 }  // namespace

@@ -1,12 +1,14 @@
 // The nav process's FusionEngine link answers configuration commands through the front-end's
 // device-compatible handler and turns what they change into engine actions: a GNSS lever arm
 // set in FLU reaches the engine in FRD, a device orientation as a mounting in radians, and
-// GetConfig reports what was set.
+// GetConfig reports what was set. Until a client changes a rate, the link streams exactly the
+// bytes replay writes to an --fe-out file for the same epochs.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
+#include "apps/output/fe_epoch_encoder.hpp"
 #include "apps/run/fe_device_emulator.hpp"
 #include "frontends/fusionengine/config_types.hpp"
 #include "frontends/fusionengine/payload_reader.hpp"
@@ -82,6 +84,24 @@ TEST(FeDeviceEmulator, SameSetConfigTwiceGivesOneAction) {
   emulator->receive(3, host.frame(set), reply, effects);
   EXPECT_EQ(effects.actions.size(), 1u);
   EXPECT_EQ(parse_reply(reply).types.size(), 2u) << "each request is answered";
+}
+
+TEST(FeDeviceEmulator, StreamsWhatTheFileEncoderWritesAtDefaultRates) {
+  auto emulator = make_fe_device_emulator(config::Config{});
+  FeEpochEncoder file_encoder;
+  std::vector<std::uint8_t> streamed, file;
+  for (int k = 0; k < 8; ++k) {
+    OutputEpoch e;
+    e.solution.header.time_ns = 1'000'000'000LL + k * 5'000'000LL;
+    e.solution.header.valid = NavSolution::kValidAttitude;
+    e.pose_due = k % 2 == 0;
+    e.gnss_fused_total = k >= 3 ? 1 : 0;
+    e.gnss_updated = k == 4;
+    emulator->stream(e, streamed);
+    file_encoder.append(e, file);
+  }
+  EXPECT_EQ(parse_reply(streamed).types.size(), 8u + 4u * 2u + 1u) << "IMUOutput x8, Pose+PoseAux x4, GNSSInfo";
+  EXPECT_EQ(streamed, file);
 }
 
 }  // namespace

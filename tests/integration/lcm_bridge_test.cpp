@@ -1,5 +1,6 @@
 // The LCM side of the nav process with real LCM traffic (loopback multicast, ttl=0): the
-// publisher's messages arrive with the solution's values, aiding published on NAVFUSE_AID_*
+// publisher's messages arrive with the solution's values (NAVFUSE_IMU: its bias-compensated IMU,
+// with each pose and only then), aiding published on NAVFUSE_AID_*
 // arrives as core measurements, and the LCM thread publishes what is posted and measures the
 // arrival-to-publication latency.
 #include <gtest/gtest.h>
@@ -57,20 +58,19 @@ TEST_F(LcmBridgeTest, PublisherMessagesArriveWithTheSolutionValues) {
   LcmReceiver<navfuse::gnss_t> fixes(rx_, apps::kGnssChannel);
   LcmReceiver<navfuse::status_t> statuses(rx_, apps::kStatusChannel);
 
-  // Sensor mounted yawed 90 deg: sensor x is vehicle y.
-  const Eigen::Matrix3d c_vs = rot::dcm_from_rpy({0, 0, 90.0 * rot::kDegToRad});
-  apps::LcmPublisher publisher(tx_, c_vs);
-  const NavSolution s = sample_solution();
-  ASSERT_TRUE(publisher.publish_pose(s));
-
-  ImuSample imu;
-  imu.header.time_ns = s.header.time_ns;
-  imu.quantity = ImuQuantity::kIncrements;
-  imu.frame = SensorFrame::kSensor;
-  imu.gyro = {0.001, 0, 0};
-  imu.accel = {0.05, 0, 0};
-  imu.dt_s = 0.005;
-  ASSERT_TRUE(publisher.publish_imu(imu));
+  apps::LcmPublisher publisher(tx_);
+  // Level, heading east: body x is east, body y south, body z down.
+  NavSolution s = sample_solution();
+  s.rpy_rad = Eigen::Vector3d(0.0, 0.0, 90.0 * rot::kDegToRad);
+  s.q_nb = rot::quat_from_rpy(s.rpy_rad);
+  s.angular_rate_rps = {0.01, -0.02, 0.2};
+  s.linear_accel_mps2 = {0.5, 0.25, 0.0};
+  s.gravity_ned_mps2 = {0.0, 0.0, 9.8};
+  // Not a pose epoch: nothing goes out.
+  EXPECT_FALSE(publisher.publish_epoch(apps::OutputEpoch{.solution = s}));
+  EXPECT_EQ(publisher.published(), 0u);
+  ASSERT_TRUE(publisher.publish_epoch(apps::OutputEpoch{.solution = s, .pose_due = true}));
+  EXPECT_EQ(publisher.published(), 2u) << "NAVFUSE_POSE and NAVFUSE_IMU";
 
   GnssPosition fix;
   fix.header.time_ns = s.header.time_ns;
@@ -108,14 +108,20 @@ TEST_F(LcmBridgeTest, PublisherMessagesArriveWithTheSolutionValues) {
   EXPECT_DOUBLE_EQ(p.height_m, 12.5);
   EXPECT_FLOAT_EQ(p.vel_ned_mps[1], -2.0f);
   EXPECT_NEAR(p.rpy_deg[2], 90.0f, 1e-4);
+  EXPECT_NEAR(p.rpy_deg[0], 0.0f, 1e-4);
   EXPECT_NEAR(p.q_nb_wxyz[0], s.q_nb.w(), 1e-15);
   EXPECT_NEAR(p.gyro_bias_dps[2], 0.03f, 1e-7);
 
+  ASSERT_EQ(imus.messages.size(), 1u);
   const navfuse::imu_t& i = imus.messages[0];
-  EXPECT_NEAR(i.gyro_radps[1], 0.2f, 1e-6);  // 0.001 rad / 0.005 s on vehicle y
-  EXPECT_NEAR(i.gyro_radps[0], 0.0f, 1e-6);
-  EXPECT_NEAR(i.accel_mps2[1], 10.0f, 1e-5);
-  EXPECT_FLOAT_EQ(i.dt_s, 0.005f);
+  EXPECT_EQ(i.time_gps_ns, s.header.time_ns);
+  EXPECT_FLOAT_EQ(i.gyro_radps[0], 0.01f);  // the solution's (bias-compensated) rate
+  EXPECT_FLOAT_EQ(i.gyro_radps[2], 0.2f);
+  // Specific force = acceleration - gravity; level, gravity is +z (down) in the body too.
+  EXPECT_NEAR(i.accel_mps2[0], 0.5f, 1e-6);
+  EXPECT_NEAR(i.accel_mps2[1], 0.25f, 1e-6);
+  EXPECT_NEAR(i.accel_mps2[2], -9.8f, 1e-6);
+  EXPECT_FLOAT_EQ(i.dt_s, 0.0f);
 
   const navfuse::gnss_t& g = fixes.messages[0];
   EXPECT_EQ(g.num_sats, 14);
@@ -180,11 +186,15 @@ TEST_F(LcmBridgeTest, ServicePublishesPostsAndQueuesAiding) {
   LcmReceiver<navfuse::status_t> statuses(rx_, apps::kStatusChannel);
   apps::MeasurementQueue queue(16);
   apps::LatencyTracker latency;
-  apps::LcmService service(url_, Eigen::Matrix3d::Identity(), queue, latency);
+  apps::LcmService service(url_, queue, latency);
   service.start();
 
-  const NavSolution s = sample_solution();
-  for (int i = 0; i < 5; ++i) ASSERT_TRUE(service.post_pose(s, apps::monotonic_ns()));
+  apps::OutputEpoch epoch{.solution = sample_solution()};
+  for (int i = 0; i < 10; ++i) {
+    epoch.pose_due = i % 2 == 0;  // five pose epochs among ten
+    epoch.arrival_ns = apps::monotonic_ns();
+    ASSERT_TRUE(service.post_epoch(epoch));
+  }
   navfuse::status_t status{};
   status.mode_name = "ahrs";
   service.post_status(status);

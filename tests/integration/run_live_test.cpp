@@ -17,6 +17,7 @@
 
 #include "apps/lcm/lcm_channels.hpp"
 #include "frontends/mip/framer.hpp"
+#include "navfuse/imu_t.hpp"
 #include "navfuse/pose_t.hpp"
 #include "navfuse/status_t.hpp"
 #include "tests/integration/child_process.hpp"
@@ -37,6 +38,7 @@ class LcmListener {
   explicit LcmListener(const std::string& url) : lcm_(url) {
     lcm_.subscribe(apps::kPoseChannel, &LcmListener::on_pose, this);
     lcm_.subscribe(apps::kStatusChannel, &LcmListener::on_status, this);
+    lcm_.subscribe(apps::kImuChannel, &LcmListener::on_imu, this);
     thread_ = std::thread([this] {
       while (!stop_) lcm_.handleTimeout(50);
     });
@@ -49,6 +51,10 @@ class LcmListener {
   std::vector<std::int64_t> pose_times() {
     std::lock_guard lock(mutex_);
     return pose_times_;
+  }
+  std::vector<std::int64_t> imu_times() {
+    std::lock_guard lock(mutex_);
+    return imu_times_;
   }
   std::optional<navfuse::status_t> last_status() {
     std::lock_guard lock(mutex_);
@@ -72,6 +78,10 @@ class LcmListener {
     std::lock_guard lock(mutex_);
     pose_times_.push_back(m->time_gps_ns);
   }
+  void on_imu(const lcm::ReceiveBuffer*, const std::string&, const navfuse::imu_t* m) {
+    std::lock_guard lock(mutex_);
+    imu_times_.push_back(m->time_gps_ns);
+  }
   void on_status(const lcm::ReceiveBuffer*, const std::string&, const navfuse::status_t* m) {
     std::lock_guard lock(mutex_);
     status_ = *m;
@@ -79,6 +89,7 @@ class LcmListener {
   lcm::LCM lcm_;
   std::mutex mutex_;
   std::vector<std::int64_t> pose_times_;
+  std::vector<std::int64_t> imu_times_;
   std::optional<navfuse::status_t> status_;
   std::thread thread_;
   std::atomic<bool> stop_{false};
@@ -208,6 +219,16 @@ TEST_F(RunLiveTest, SerialDeviceLcmAidingFeCommandsReplugAndSigterm) {
   ASSERT_EQ(status->num_inputs, 1);
   EXPECT_GE(status->inputs[0].reconnects, 1);
   EXPECT_GT(status->latency_p99_us, 0.0f);
+  // NAVFUSE_IMU goes out with each NAVFUSE_POSE (output.rate_hz: 50 Hz), not at the 200 Hz IMU rate.
+  const auto poses = listener.pose_times();
+  const auto imus = listener.imu_times();
+  EXPECT_GT(imus.size(), poses.size() / 2);
+  EXPECT_LE(imus.size(), poses.size());
+  // Each at the time of a pose (UDP may lose the odd pose on the way: allow 1 %).
+  const auto unmatched = std::count_if(imus.begin(), imus.end(), [&](std::int64_t t) {
+    return !std::binary_search(poses.begin(), poses.end(), t);
+  });
+  EXPECT_LE(unmatched * 100, static_cast<std::ptrdiff_t>(imus.size())) << unmatched << " of " << imus.size();
 
   // 6. SIGTERM: exit 0 promptly, outputs complete.
   nav.send(SIGTERM);

@@ -1,4 +1,4 @@
-#include "apps/output/fe_pose_writer.hpp"
+#include "apps/output/compensated_imu.hpp"
 
 namespace navfuse::apps {
 
@@ -14,16 +14,6 @@ bool compensated_imu_from(const NavSolution& s, ImuSample& out) {
   out.accel = s.linear_accel_mps2 - s.q_nb.conjugate() * s.gravity_ned_mps2;
   out.dt_s = 0.0;
   return true;
-}
-
-void FePoseWriter::on_imu(const NavSolution& s) {
-  if (compensated_imu_from(s, imu_)) file_.write(writer_.imu_output(imu_));
-}
-
-void FePoseWriter::on_pose(const PoseEpoch& epoch) {
-  file_.write(writer_.pose(epoch.solution));
-  file_.write(writer_.pose_aux(epoch.solution));
-  if (epoch.gnss_updated) file_.write(writer_.gnss_info(epoch.solution, epoch.num_sats));
 }
 
 }  // namespace navfuse::apps

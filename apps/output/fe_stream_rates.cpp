@@ -1,0 +1,52 @@
+#include "apps/output/fe_stream_rates.hpp"
+
+namespace navfuse::apps {
+
+using fe::MessageRate;
+using fe::MessageType;
+
+FeStreamRates::FeStreamRates()
+    : entries_{{{MessageType::kPose}, {MessageType::kPoseAux}, {MessageType::kGnssInfo}, {MessageType::kImuOutput}}} {}
+
+FeStreamRates::Entry* FeStreamRates::find(MessageType type) {
+  for (Entry& e : entries_) {
+    if (e.type == type) return &e;
+  }
+  return nullptr;
+}
+
+fe::MessageRate FeStreamRates::rate(MessageType type) const {
+  for (const Entry& e : entries_) {
+    if (e.type == type) return e.rate;
+  }
+  return MessageRate::kOff;
+}
+
+bool FeStreamRates::set(std::uint16_t message_id, MessageRate rate) {
+  const auto apply = [rate](Entry& e) {
+    e.rate = rate;
+    const double p = fe::interval_s(rate);
+    e.interval = OutputRate(p > 0 ? 1.0 / p : 0.0);
+  };
+  if (message_id == fe::kAllMessages) {
+    for (Entry& e : entries_) apply(e);
+    return true;
+  }
+  Entry* e = find(static_cast<MessageType>(message_id));
+  if (e == nullptr) return false;
+  apply(*e);
+  return true;
+}
+
+bool FeStreamRates::due(MessageType type, std::int64_t time_ns, bool default_due, bool on_change) {
+  Entry* e = find(type);
+  if (e == nullptr) return false;
+  switch (e->rate) {
+    case MessageRate::kOff: return false;
+    case MessageRate::kDefault: return default_due;
+    case MessageRate::kOnChange: return on_change;
+    default: return e->interval.due(time_ns);
+  }
+}
+
+}  // namespace navfuse::apps

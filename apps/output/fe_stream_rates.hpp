@@ -1,0 +1,37 @@
+// The FusionEngine messages navfuse streams (Pose 10000, PoseAux 10003, GNSSInfo 10001,
+// IMUOutput 11000) with the rate each goes out at. All start at "default", which is the
+// DESIGN.md --fe-out contract; a device-emulating link lets clients change them with
+// SetMessageRate (spec L1419-1440), a file keeps the defaults.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "apps/output/output_rate.hpp"
+#include "frontends/fusionengine/messages_control.hpp"
+
+namespace navfuse::apps {
+
+class FeStreamRates {
+ public:
+  struct Entry {
+    fe::MessageType type;
+    fe::MessageRate rate = fe::MessageRate::kDefault;
+    OutputRate interval{0.0};  // for interval rates (k10Ms ... k60S)
+  };
+  FeStreamRates();
+
+  // False for a message navfuse does not stream (the device answers "unsupported").
+  bool set(std::uint16_t message_id, fe::MessageRate rate);
+  fe::MessageRate rate(fe::MessageType type) const;
+  // Whether `type` goes out at this epoch. `default_due` is when it would at its default rate,
+  // `on_change` whether its content changed since it last went out.
+  bool due(fe::MessageType type, std::int64_t time_ns, bool default_due, bool on_change);
+  const std::array<Entry, 4>& entries() const { return entries_; }
+
+ private:
+  Entry* find(fe::MessageType type);
+  std::array<Entry, 4> entries_;
+};
+
+}  // namespace navfuse::apps
