@@ -12,8 +12,8 @@ const std::vector<const frontends::FrontendInfo*>& frontends_list() {
     // Binary protocols first: on a tie in valid frames the one with the stronger check wins
     // (CRC-32, then Fletcher, then CRC-16 / XOR-checked ASCII).
     return std::vector<const frontends::FrontendInfo*>{
-        &frontends::fusionengine_frontend(), &frontends::mip_frontend(),
-        &frontends::vectornav_frontend(), &frontends::unicore_frontend()};
+        &frontends::fusionengine::frontend(), &frontends::mip::frontend(),
+        &frontends::vectornav::frontend(), &frontends::unicore::frontend()};
   }();
   return list;
 }

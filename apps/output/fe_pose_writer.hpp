@@ -21,7 +21,7 @@ class FePoseWriter final : public PoseWriter {
 
  private:
   OutputFile file_;
-  fe::FusionEngineWriter writer_;  // one writer: one sequence counter for the whole stream
+  frontends::fusionengine::FusionEngineWriter writer_;  // one writer: one sequence counter for the whole stream
   ImuSample imu_;                  // reused: no allocation per sample
 };
 

@@ -50,8 +50,8 @@ std::string mip_refusal(std::span<const std::uint8_t> bytes) {
 }  // namespace
 
 std::vector<DeviceCommand> device_setup_commands(std::string_view format) {
-  if (format == "vn") return from_sentences(frontends::vn::cmd::fusion_setup_commands({}));
-  if (format == "unicore") return from_sentences(unicore::fusion_setup_commands());
+  if (format == "vn") return from_sentences(frontends::vectornav::cmd::fusion_setup_commands({}));
+  if (format == "unicore") return from_sentences(frontends::unicore::fusion_setup_commands());
   if (format == "mip") return frontends::mip::cv7_setup_sequence();
   return {};
 }

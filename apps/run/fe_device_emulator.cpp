@@ -8,6 +8,8 @@
 namespace navfuse::apps {
 namespace {
 
+namespace fe = frontends::fusionengine;
+
 using fe::MessageRate;
 using fe::MessageType;
 

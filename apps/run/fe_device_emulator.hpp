@@ -23,22 +23,22 @@ namespace navfuse::apps {
 class FeStreamRates {
  public:
   struct Entry {
-    fe::MessageType type;
-    fe::MessageRate rate = fe::MessageRate::kDefault;
+    frontends::fusionengine::MessageType type;
+    frontends::fusionengine::MessageRate rate = frontends::fusionengine::MessageRate::kDefault;
     OutputRate interval{0.0};  // for interval rates (k10Ms ... k60S)
   };
   FeStreamRates();
 
   // False for a message navfuse does not stream (the device answers "unsupported").
-  bool set(std::uint16_t message_id, fe::MessageRate rate);
-  fe::MessageRate rate(fe::MessageType type) const;
+  bool set(std::uint16_t message_id, frontends::fusionengine::MessageRate rate);
+  frontends::fusionengine::MessageRate rate(frontends::fusionengine::MessageType type) const;
   // Whether `type` goes out at this epoch. `default_due` is when it would at its default rate,
   // `on_change` whether its content changed since it last went out.
-  bool due(fe::MessageType type, std::int64_t time_ns, bool default_due, bool on_change);
+  bool due(frontends::fusionengine::MessageType type, std::int64_t time_ns, bool default_due, bool on_change);
   const std::array<Entry, 4>& entries() const { return entries_; }
 
  private:
-  Entry* find(fe::MessageType type);
+  Entry* find(frontends::fusionengine::MessageType type);
   std::array<Entry, 4> entries_;
 };
 
@@ -51,16 +51,16 @@ class FeDeviceEmulator final : public DeviceEmulator {
                CommandEffects& effects) override;
 
  private:
-  void handle(const fe::Frame& frame, std::vector<std::uint8_t>& reply, CommandEffects& effects);
-  fe::Framer& framer_for(io::PeerId peer);
+  void handle(const frontends::fusionengine::Frame& frame, std::vector<std::uint8_t>& reply, CommandEffects& effects);
+  frontends::fusionengine::Framer& framer_for(io::PeerId peer);
 
   config::Config config_;
   // SetConfig / GetConfig / SaveConfig are answered by the front-end's device-compatible
   // handler; what it changes in the config is handed to the engine as EngineActions.
-  fe::DeviceControl control_;
+  frontends::fusionengine::DeviceControl control_;
   FeStreamRates rates_;
-  fe::FusionEngineWriter writer_;  // one sequence counter for everything this link sends
-  std::map<io::PeerId, std::unique_ptr<fe::Framer>> framers_;
+  frontends::fusionengine::FusionEngineWriter writer_;  // one sequence counter for everything this link sends
+  std::map<io::PeerId, std::unique_ptr<frontends::fusionengine::Framer>> framers_;
   OutputEpoch last_;  // for MessageRequest: the newest solution
   bool have_last_ = false;
   std::uint64_t gnss_at_last_info_ = 0;

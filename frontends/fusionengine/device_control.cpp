@@ -5,7 +5,7 @@
 #include "core/rotation/rotation.hpp"
 #include "frontends/fusionengine/payload_reader.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 namespace {
 
 using rot::kDegToRad;
@@ -337,4 +337,4 @@ void DeviceControl::on_frame(const Frame& f, std::vector<std::uint8_t>& out) {
   });
 }
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

@@ -4,25 +4,25 @@
 #include "frontends/fusionengine/encoder.hpp"
 #include "frontends/fusionengine/framer.hpp"
 
-namespace navfuse::frontends {
+namespace navfuse::frontends::fusionengine {
 namespace {
 
 std::size_t probe(std::span<const std::uint8_t> head) {
-  fe::Framer framer;
+  Framer framer;
   std::size_t frames = 0;
-  framer.feed(head, [&](const fe::Frame&) { ++frames; });
+  framer.feed(head, [&](const Frame&) { ++frames; });
   return frames;
 }
 
-std::unique_ptr<StreamDecoder> make_decoder() { return std::make_unique<fe::FusionEngineDecoder>(); }
-std::unique_ptr<MeasurementEncoder> make_encoder() { return std::make_unique<fe::FusionEngineEncoder>(); }
+std::unique_ptr<StreamDecoder> make_decoder() { return std::make_unique<FusionEngineDecoder>(); }
+std::unique_ptr<MeasurementEncoder> make_encoder() { return std::make_unique<FusionEngineEncoder>(); }
 
 }  // namespace
 
-const FrontendInfo& fusionengine_frontend() {
+const FrontendInfo& frontend() {
   static const FrontendInfo info{"fe", "Point One FusionEngine binary (spec v0.24, protocol 1.25)", &probe,
                                  &make_decoder, &make_encoder};
   return info;
 }
 
-}  // namespace navfuse::frontends
+}  // namespace navfuse::frontends::fusionengine

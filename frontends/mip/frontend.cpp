@@ -4,21 +4,21 @@
 #include "frontends/mip/encoder.hpp"
 #include "frontends/mip/framer.hpp"
 
-namespace navfuse::frontends {
+namespace navfuse::frontends::mip {
 namespace {
 
 std::size_t probe(std::span<const std::uint8_t> head) {
-  mip::Framer framer;
-  framer.feed(head, [](const mip::PacketView&) {});
+  Framer framer;
+  framer.feed(head, [](const PacketView&) {});
   return framer.counters().frames;
 }
 
-std::unique_ptr<StreamDecoder> make_decoder() { return std::make_unique<mip::MipDecoder>(); }
-std::unique_ptr<MeasurementEncoder> make_encoder() { return std::make_unique<mip::MipEncoder>(); }
+std::unique_ptr<StreamDecoder> make_decoder() { return std::make_unique<MipDecoder>(); }
+std::unique_ptr<MeasurementEncoder> make_encoder() { return std::make_unique<MipEncoder>(); }
 
 }  // namespace
 
-const FrontendInfo& mip_frontend() {
+const FrontendInfo& frontend() {
   static const FrontendInfo info{
       .format = "mip",
       .description = "MicroStrain MIP (3DM-CV7): sensor, filter, GNSS data and 0x13 aiding",
@@ -29,4 +29,4 @@ const FrontendInfo& mip_frontend() {
   return info;
 }
 
-}  // namespace navfuse::frontends
+}  // namespace navfuse::frontends::mip

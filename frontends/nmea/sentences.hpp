@@ -20,7 +20,7 @@
 #include "frontends/nmea/talker.hpp"
 #include "frontends/nmea/utc_fields.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 
 inline constexpr std::size_t kTalkerChars = 2;
 inline constexpr std::size_t kSentenceTypeChars = 3;
@@ -184,4 +184,4 @@ void put_time(frontends::FrameRecord& r, const std::optional<TimeOfDay>& t);
 void put_latlon(frontends::FrameRecord& r, const std::optional<LatLonField>& lat,
                 const std::optional<LatLonField>& lon);
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

@@ -8,7 +8,7 @@
 #include "frontends/nmea/sentence_writer.hpp"
 #include "frontends/nmea/utc_fields.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 
 constexpr std::int64_t kMsPerSecond = 1000;
@@ -201,4 +201,4 @@ std::vector<std::string> fusion_setup_commands(bool save) {
   return out;
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

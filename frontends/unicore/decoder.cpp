@@ -8,7 +8,7 @@
 #include "frontends/unicore/measurement_mapping.hpp"
 #include "frontends/unicore/reply.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 
 constexpr std::string_view kProtocol = "unicore";
@@ -262,4 +262,4 @@ void UnicoreDecoder::on_unicore(const nmea::Frame& frame, std::string_view name,
   }
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -20,7 +20,7 @@
 #include "frontends/unicore/messages.hpp"
 #include "frontends/unicore/utc_clock.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 
 struct DecoderOptions {
   nmea::FramerOptions framer;
@@ -94,4 +94,4 @@ class UnicoreDecoder final : public frontends::StreamDecoder {
   std::uint32_t cumulative_pulses_ = 0;  // wraps at 2^32 (WheelTicks::rollover = 0)
 };
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -9,7 +9,7 @@
 #include "frontends/unicore/measurement_mapping.hpp"
 #include "frontends/unicore/messages.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 
 using time::kNsPerSecond;
@@ -287,4 +287,4 @@ bool UnicoreEncoder::encode_solution(const NavSolution& s, std::vector<std::uint
   return true;
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

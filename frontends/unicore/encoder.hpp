@@ -21,7 +21,7 @@
 #include "frontends/common/stream_decoder.hpp"
 #include "frontends/nmea/talker.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 
 struct EncoderOptions {
   nmea::Dialect dialect = nmea::Dialect::kH51;  // CFGNMEA nmeaVer of the simulated device
@@ -62,4 +62,4 @@ class UnicoreEncoder final : public frontends::MeasurementEncoder {
   std::optional<std::uint32_t> last_status_;
 };
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -6,7 +6,7 @@
 #include "frontends/unicore/decoder.hpp"
 #include "frontends/unicore/encoder.hpp"
 
-namespace navfuse::frontends {
+namespace navfuse::frontends::unicore {
 namespace {
 
 // Names that identify this device's stream. Plain NMEA names count too (the UM220 outputs them
@@ -39,16 +39,16 @@ std::size_t probe(std::span<const std::uint8_t> head) {
   return count;
 }
 
-std::unique_ptr<StreamDecoder> make_decoder() { return std::make_unique<unicore::UnicoreDecoder>(); }
-std::unique_ptr<MeasurementEncoder> make_encoder() { return std::make_unique<unicore::UnicoreEncoder>(); }
+std::unique_ptr<StreamDecoder> make_decoder() { return std::make_unique<UnicoreDecoder>(); }
+std::unique_ptr<MeasurementEncoder> make_encoder() { return std::make_unique<UnicoreEncoder>(); }
 
 }  // namespace
 
-const FrontendInfo& unicore_frontend() {
+const FrontendInfo& frontend() {
   static const FrontendInfo info{"unicore",
                                  "Unicore UM220-INS ASCII protocol + NMEA (GYOACC, NAVPOS/VEL/ATT, GGA...)",
                                  &probe, &make_decoder, &make_encoder};
   return info;
 }
 
-}  // namespace navfuse::frontends
+}  // namespace navfuse::frontends::unicore

@@ -3,11 +3,11 @@
 
 #include "frontends/common/stream_decoder.hpp"
 
-namespace navfuse::frontends {
+namespace navfuse::frontends::unicore {
 
 // probe(): number of checksummed sentences in the head whose name this front-end knows;
-// make_decoder(): unicore::UnicoreDecoder with default options;
-// make_encoder(): unicore::UnicoreEncoder with default options (h51 dialect).
-const FrontendInfo& unicore_frontend();
+// make_decoder(): UnicoreDecoder with default options;
+// make_encoder(): UnicoreEncoder with default options (h51 dialect).
+const FrontendInfo& frontend();
 
-}  // namespace navfuse::frontends
+}  // namespace navfuse::frontends::unicore

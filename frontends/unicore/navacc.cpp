@@ -4,7 +4,7 @@
 #include "frontends/nmea/sentences.hpp"
 #include "frontends/unicore/messages.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 constexpr std::size_t kNavaccDataFields = 5;  // syntax L1352
 constexpr double kMilli = 1e-3;
@@ -44,4 +44,4 @@ void append_fields(const Navacc& m, frontends::FrameRecord& r) {
   put(r, "course_std_deg", m.course_acc_mdeg * kMilli);
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

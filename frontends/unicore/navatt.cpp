@@ -4,7 +4,7 @@
 #include "frontends/nmea/sentences.hpp"
 #include "frontends/unicore/messages.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 constexpr std::size_t kNavattDataFields = 8;  // syntax L1370
 }  // namespace
@@ -46,4 +46,4 @@ void append_fields(const Navatt& m, frontends::FrameRecord& r) {
   put(r, "yaw_std_deg", m.yaw_std_e5deg * kNavattDegPerUnit);
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -2,7 +2,7 @@
 
 #include "core/bytes/checks.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 
 // Headers that come back as configuration reports: every CFG* command (L160) plus the query
@@ -72,4 +72,4 @@ void ReplyReader::feed(std::span<const std::uint8_t> bytes,
   });
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

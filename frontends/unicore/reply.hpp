@@ -13,7 +13,7 @@
 #include "frontends/nmea/fields.hpp"
 #include "frontends/nmea/sentence_framer.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 
 enum class ReplyKind : std::uint8_t {
   // "$OK" may come as "$OK", "$OK*04" or "$OK,*28": the spec shows only the first (digest §11
@@ -55,4 +55,4 @@ class ReplyReader {
   nmea::SentenceFramer framer_;
 };
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -11,7 +11,7 @@
 #include "frontends/vectornav/binary_mapper.hpp"
 #include "frontends/vectornav/ins_status.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 
 using rot::kDegToRad;
@@ -396,4 +396,4 @@ bool AsciiMapper::map_register(int id, std::span<const double> v, DecodeSink& si
   }
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

@@ -13,7 +13,7 @@
 
 #include "frontends/vectornav/binary_header.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 using Vec3f = std::array<float, 3>;
 using Vec3d = std::array<double, 3>;
@@ -146,4 +146,4 @@ struct BinaryMessage {
   }
 };
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

@@ -8,7 +8,7 @@
 #include "frontends/vectornav/binary_layout.hpp"
 #include "frontends/vectornav/float_cast.hpp"
 
-namespace navfuse::frontends::vn::cmd {
+namespace navfuse::frontends::vectornav::cmd {
 namespace {
 
 constexpr std::string_view kRead = "VNRRG";
@@ -270,4 +270,4 @@ std::optional<CompassBaseline> parse_compass_baseline(const Reply& r) {
   return CompassBaseline{{(*v)[0], (*v)[1], (*v)[2]}, {(*v)[3], (*v)[4], (*v)[5]}};
 }
 
-}  // namespace navfuse::frontends::vn::cmd
+}  // namespace navfuse::frontends::vectornav::cmd

@@ -4,8 +4,7 @@
 #include "frontends/vectornav/vn_measurement_encoder.hpp"
 #include "frontends/vectornav/vn_stream_decoder.hpp"
 
-namespace navfuse::frontends {
-namespace vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 constexpr std::string_view kAsciiVectorNav = "$VN";
 }
@@ -25,17 +24,15 @@ std::size_t probe_vectornav(std::span<const std::uint8_t> head) {
   return count;
 }
 
-}  // namespace vn
-
-const FrontendInfo& vectornav_frontend() {
+const FrontendInfo& frontend() {
   static const FrontendInfo info{
       "vn",
       "VectorNav VN-300 binary (0xFA/0xFB) and ASCII ($VN) output",
-      &vn::probe_vectornav,
-      []() -> std::unique_ptr<StreamDecoder> { return std::make_unique<vn::VnStreamDecoder>(); },
-      []() -> std::unique_ptr<MeasurementEncoder> { return std::make_unique<vn::VnMeasurementEncoder>(); },
+      &probe_vectornav,
+      []() -> std::unique_ptr<StreamDecoder> { return std::make_unique<VnStreamDecoder>(); },
+      []() -> std::unique_ptr<MeasurementEncoder> { return std::make_unique<VnMeasurementEncoder>(); },
   };
   return info;
 }
 
-}  // namespace navfuse::frontends
+}  // namespace navfuse::frontends::vectornav

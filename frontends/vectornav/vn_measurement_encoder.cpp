@@ -12,7 +12,7 @@
 #include "frontends/vectornav/group_imu.hpp"
 #include "frontends/vectornav/ins_status.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 
 using rot::kRadToDeg;
@@ -184,4 +184,4 @@ bool VnMeasurementEncoder::encode_speed(const VehicleSpeed& s, std::vector<std::
   return true;
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

@@ -2,7 +2,7 @@
 
 #include "frontends/vectornav/binary_codec.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 constexpr std::string_view kProtocol = "vn";
 constexpr std::string_view kBinaryName = "binary";
@@ -106,4 +106,4 @@ void VnStreamDecoder::on_ascii(const Frame& frame, DecodeSink& sink) {
   }
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

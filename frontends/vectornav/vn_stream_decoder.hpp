@@ -23,7 +23,7 @@
 #include "frontends/vectornav/split_packet.hpp"
 #include "frontends/vectornav/stream_clock.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 // Why a frame's content was not used, for reports beyond the StreamCounters totals.
 enum class DecodeIssue : std::uint8_t {
@@ -68,4 +68,4 @@ class VnStreamDecoder final : public StreamDecoder {
   std::array<std::uint64_t, static_cast<std::size_t>(DecodeIssue::kCount)> issues_{};
 };
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

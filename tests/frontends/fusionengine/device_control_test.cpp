@@ -7,7 +7,7 @@
 #include "frontends/fusionengine/device_control.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 namespace {
 
 struct Reply {
@@ -167,4 +167,4 @@ TEST(FeDeviceControl, MessageRatesResetAndVersion) {
 }
 
 }  // namespace
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

@@ -8,7 +8,7 @@
 #include "core/bytes/checks.hpp"
 #include "frontends/nmea/sentence_framer.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 
 struct Got {
@@ -202,4 +202,4 @@ TEST(SentenceFramer, SingleBitFlipsNeverPassAsAnotherChecksummedSentence) {
 }
 
 }  // namespace
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

@@ -7,7 +7,7 @@
 #include "core/bytes/checks.hpp"
 #include "core/time/gps_time.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 
 std::string line(const char* s) { return std::string(s) + "\r\n"; }
@@ -141,4 +141,4 @@ TEST(UnicoreReplies, ReaderFindsRepliesInAStream) {
 }
 
 }  // namespace
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -14,7 +14,7 @@
 #include "frontends/unicore/measurement_mapping.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 
 using test::CollectingSink;
@@ -287,4 +287,4 @@ TEST(UnicoreRoundTrip, DeadReckoningAndStdThroughGgaAndGst) {
 }
 
 }  // namespace
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

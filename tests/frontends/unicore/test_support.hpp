@@ -10,7 +10,7 @@
 #include "frontends/nmea/fields.hpp"
 #include "frontends/nmea/sentence_framer.hpp"
 
-namespace navfuse::unicore::test {
+namespace navfuse::frontends::unicore::test {
 
 // Frames `sentence` + "\r\n"; the body and its fields, or nullopt if the framer rejects it.
 struct Framed {
@@ -53,4 +53,4 @@ class CollectingSink : public frontends::DecodeSink {
   bool frames_;
 };
 
-}  // namespace navfuse::unicore::test
+}  // namespace navfuse::frontends::unicore::test

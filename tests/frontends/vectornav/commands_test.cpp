@@ -6,7 +6,7 @@
 #include "frontends/vectornav/commands.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::frontends::vn::cmd {
+namespace navfuse::frontends::vectornav::cmd {
 namespace {
 
 TEST(VnCommands, SimpleCommandsMatchTheIcdExamples) {
@@ -148,4 +148,4 @@ TEST(VnCommands, FusionSetupSequence) {
 }
 
 }  // namespace
-}  // namespace navfuse::frontends::vn::cmd
+}  // namespace navfuse::frontends::vectornav::cmd
