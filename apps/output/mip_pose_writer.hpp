@@ -1,5 +1,5 @@
 // --mip-out: the solution as the MIP filter data set 0x82 a 3DM-CV7 streams (DESIGN.md, contract),
-// one packet group per pose, encoded by the MIP front-end (frontends/mip/solution_encoder.hpp).
+// one packet group per pose, encoded by the MIP front-end (frontends/mip/encoder_solution.hpp).
 #pragma once
 
 #include <cstdint>

@@ -2,7 +2,7 @@
 // PoseAux (10003) at output.rate_hz, GNSSInfo (10001) at pose times after a GNSS fix was fused,
 // and IMUOutput (11000) after every IMU sample (DESIGN.md --fe-out), each at the rate a client
 // set with SetMessageRate; and answers the device's commands on the same link (configuration
-// commands through frontends/fusionengine/device_control).
+// commands through frontends/fusionengine/responder).
 #pragma once
 
 #include <array>
@@ -12,9 +12,9 @@
 #include "apps/output/output_rate.hpp"
 #include "apps/run/device_emulator.hpp"
 #include "core/config/config.hpp"
-#include "frontends/fusionengine/device_control.hpp"
 #include "frontends/fusionengine/framer.hpp"
 #include "frontends/fusionengine/messages_control.hpp"
+#include "frontends/fusionengine/responder.hpp"
 #include "frontends/fusionengine/writer.hpp"
 
 namespace navfuse::apps {

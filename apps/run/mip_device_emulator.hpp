@@ -1,6 +1,6 @@
 // --mip-out: navfuse as a CV7 on the link. Streams the filter data set 0x82 (one packet group per
-// pose, frontends/mip/solution_encoder.hpp) unless a client disabled that stream or set the
-// device idle, and answers MIP commands as the CV7 does (frontends/mip/command_responder.hpp):
+// pose, frontends/mip/encoder_solution.hpp) unless a client disabled that stream or set the
+// device idle, and answers MIP commands as the CV7 does (frontends/mip/responder.hpp):
 // external aiding (0x13) is handed to the filter, and the filter commands with an effect on the
 // estimate — reset (0x0D,0x01), sensor-to-vehicle rotation (0x0C,0x31), antenna offsets
 // (0x0D,0x54) — are applied to the engine as well as being acknowledged.
@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "apps/run/device_emulator.hpp"
-#include "frontends/mip/command_responder.hpp"
 #include "frontends/mip/framer.hpp"
+#include "frontends/mip/responder.hpp"
 
 namespace navfuse::apps {
 

@@ -4,7 +4,7 @@
 
 #include "frontends/mip/field_schema.hpp"
 #include "frontends/mip/packet.hpp"
-#include "frontends/mip/packet_writer.hpp"
+#include "frontends/mip/writer.hpp"
 
 namespace navfuse::frontends::mip {
 namespace {

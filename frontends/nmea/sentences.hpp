@@ -16,9 +16,9 @@
 #include "frontends/common/stream_decoder.hpp"
 #include "frontends/nmea/fields.hpp"
 #include "frontends/nmea/latlon.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
 #include "frontends/nmea/talker.hpp"
 #include "frontends/nmea/utc_fields.hpp"
+#include "frontends/nmea/writer.hpp"
 
 namespace navfuse::frontends::nmea {
 

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string_view>
 
-#include "frontends/nmea/sentence_writer.hpp"
+#include "frontends/nmea/writer.hpp"
 
 namespace navfuse::frontends::nmea {
 

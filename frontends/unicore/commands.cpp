@@ -5,8 +5,8 @@
 
 #include "core/time/gps_time.hpp"
 #include "frontends/nmea/latlon.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
 #include "frontends/nmea/utc_fields.hpp"
+#include "frontends/nmea/writer.hpp"
 
 namespace navfuse::frontends::unicore {
 namespace {

@@ -1,6 +1,6 @@
 // CWOUT: interference detection (spec L1440-L1451).
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
+#include "frontends/nmea/writer.hpp"
 #include "frontends/unicore/messages.hpp"
 
 namespace navfuse::frontends::unicore {

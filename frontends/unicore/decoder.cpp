@@ -5,8 +5,8 @@
 
 #include "core/rotation/rotation.hpp"
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/unicore/measurement_mapping.hpp"
-#include "frontends/unicore/reply.hpp"
+#include "frontends/unicore/commands_reply.hpp"
+#include "frontends/unicore/to_core.hpp"
 
 namespace navfuse::frontends::unicore {
 namespace {

@@ -6,8 +6,8 @@
 #include "core/rotation/rotation.hpp"
 #include "core/time/gps_time.hpp"
 #include "frontends/nmea/sentences.hpp"
-#include "frontends/unicore/measurement_mapping.hpp"
 #include "frontends/unicore/messages.hpp"
+#include "frontends/unicore/to_core.hpp"
 
 namespace navfuse::frontends::unicore {
 namespace {

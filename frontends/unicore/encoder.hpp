@@ -1,5 +1,5 @@
 // MeasurementEncoder writing core measurements the way a UM220-INS emits them (for `navfuse sim`
-// and round-trip tests); the inverse of measurement_mapping.hpp:
+// and round-trip tests); the inverse of to_core.hpp:
 //   ImuSample (sensor frame)  -> GYOACC;  ImuSample (vehicle frame) -> GYOACC-V (RFU axes).
 //                                Increments are divided by dt_s into rates.
 //   WheelTicks / VehicleSpeed -> buffered (true, no bytes): their pulses ride in the next GYOACC

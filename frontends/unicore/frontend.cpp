@@ -1,7 +1,7 @@
 #include "frontends/unicore/frontend.hpp"
 
 #include "frontends/nmea/fields.hpp"
-#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/framer.hpp"
 #include "frontends/nmea/sentences.hpp"
 #include "frontends/unicore/decoder.hpp"
 #include "frontends/unicore/encoder.hpp"

@@ -1,6 +1,6 @@
 // LSF: leap-second forecast, output form (spec L1392-L1438; digest §4.10).
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
+#include "frontends/nmea/writer.hpp"
 #include "frontends/unicore/messages.hpp"
 
 namespace navfuse::frontends::unicore {

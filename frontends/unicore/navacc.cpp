@@ -1,7 +1,7 @@
 // NAVACC: horizontal position / velocity / course accuracy (spec L1348-L1364; digest §4.8).
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
 #include "frontends/nmea/sentences.hpp"
+#include "frontends/nmea/writer.hpp"
 #include "frontends/unicore/messages.hpp"
 
 namespace navfuse::frontends::unicore {

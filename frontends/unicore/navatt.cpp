@@ -1,7 +1,7 @@
 // NAVATT: attitude and its standard deviations (spec L1366-L1388; digest §4.9).
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
 #include "frontends/nmea/sentences.hpp"
+#include "frontends/nmea/writer.hpp"
 #include "frontends/unicore/messages.hpp"
 
 namespace navfuse::frontends::unicore {

@@ -1,6 +1,6 @@
 // NAVTIME: GPS, BDS, Galileo and GLONASS time (spec L1320-L1346; digest §4.7, §11 item 24).
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
+#include "frontends/nmea/writer.hpp"
 #include "frontends/unicore/messages.hpp"
 
 namespace navfuse::frontends::unicore {

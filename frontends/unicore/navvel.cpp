@@ -1,6 +1,6 @@
 // NAVVEL: GNSS velocity in ECEF (spec L1300-L1318; digest §4.6).
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
+#include "frontends/nmea/writer.hpp"
 #include "frontends/unicore/messages.hpp"
 
 namespace navfuse::frontends::unicore {

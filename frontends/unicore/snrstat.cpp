@@ -1,6 +1,6 @@
 // SNRSTAT: INS initialisation, odometer, installation and map-matching state (spec L805-L821).
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
+#include "frontends/nmea/writer.hpp"
 #include "frontends/unicore/messages.hpp"
 
 namespace navfuse::frontends::unicore {

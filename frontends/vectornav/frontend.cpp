@@ -1,8 +1,8 @@
 #include "frontends/vectornav/frontend.hpp"
 
-#include "frontends/vectornav/port_framer.hpp"
-#include "frontends/vectornav/vn_measurement_encoder.hpp"
-#include "frontends/vectornav/vn_stream_decoder.hpp"
+#include "frontends/vectornav/decoder.hpp"
+#include "frontends/vectornav/encoder.hpp"
+#include "frontends/vectornav/framer.hpp"
 
 namespace navfuse::frontends::vectornav {
 namespace {

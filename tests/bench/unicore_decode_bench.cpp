@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/time/gps_time.hpp"
-#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/framer.hpp"
 #include "frontends/unicore/decoder.hpp"
 #include "frontends/unicore/encoder.hpp"
 

@@ -6,7 +6,7 @@
 
 #include <random>
 
-#include "frontends/vectornav/vn_stream_decoder.hpp"
+#include "frontends/vectornav/decoder.hpp"
 #include "tests/frontends/vectornav/stream_fixture.hpp"
 
 namespace {

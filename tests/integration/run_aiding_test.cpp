@@ -23,7 +23,7 @@
 #include "frontends/mip/decoder.hpp"
 #include "frontends/mip/framer.hpp"
 #include "frontends/mip/packet.hpp"
-#include "frontends/mip/packet_writer.hpp"
+#include "frontends/mip/writer.hpp"
 #include "tests/frontends/mip/test_util.hpp"
 #include "tests/integration/child_process.hpp"
 #include "tests/integration/test_paths.hpp"

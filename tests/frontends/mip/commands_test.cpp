@@ -2,12 +2,12 @@
 // CommandResponder answering as a CV7 would.
 #include <gtest/gtest.h>
 
-#include "frontends/mip/command_responder.hpp"
 #include "frontends/mip/commands.hpp"
 #include "frontends/mip/field_schema.hpp"
 #include "frontends/mip/frame_record.hpp"
 #include "frontends/mip/framer.hpp"
-#include "frontends/mip/packet_writer.hpp"
+#include "frontends/mip/responder.hpp"
+#include "frontends/mip/writer.hpp"
 #include "tests/frontends/mip/test_util.hpp"
 
 namespace navfuse::frontends::mip {

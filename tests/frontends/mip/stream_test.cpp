@@ -12,7 +12,7 @@
 #include "frontends/mip/encoder.hpp"
 #include "frontends/mip/framer.hpp"
 #include "frontends/mip/frontend.hpp"
-#include "frontends/mip/packet_writer.hpp"
+#include "frontends/mip/writer.hpp"
 #include "tests/frontends/mip/test_util.hpp"
 
 namespace navfuse::frontends::mip {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/bytes/checks.hpp"
-#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/framer.hpp"
 #include "frontends/nmea/sentences.hpp"
 
 namespace navfuse::frontends::nmea {

@@ -2,10 +2,10 @@
 // examples), and the reply parser.
 #include <gtest/gtest.h>
 
-#include "frontends/unicore/commands.hpp"
-#include "frontends/unicore/reply.hpp"
 #include "core/bytes/checks.hpp"
 #include "core/time/gps_time.hpp"
+#include "frontends/unicore/commands.hpp"
+#include "frontends/unicore/commands_reply.hpp"
 
 namespace navfuse::frontends::unicore {
 namespace {

@@ -11,7 +11,7 @@
 #include "core/time/gps_time.hpp"
 #include "frontends/unicore/decoder.hpp"
 #include "frontends/unicore/encoder.hpp"
-#include "frontends/unicore/measurement_mapping.hpp"
+#include "frontends/unicore/to_core.hpp"
 #include "test_support.hpp"
 
 namespace navfuse::frontends::unicore {

@@ -8,7 +8,7 @@
 #include "core/bytes/checks.hpp"
 #include "frontends/common/stream_decoder.hpp"
 #include "frontends/nmea/fields.hpp"
-#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/framer.hpp"
 
 namespace navfuse::frontends::unicore::test {
 

@@ -5,7 +5,7 @@
 #include <random>
 
 #include "core/rotation/rotation.hpp"
-#include "frontends/vectornav/vn_measurement_encoder.hpp"
+#include "frontends/vectornav/encoder.hpp"
 #include "test_support.hpp"
 
 namespace navfuse::frontends::vectornav {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/rotation/rotation.hpp"
-#include "frontends/vectornav/vn_measurement_encoder.hpp"
+#include "frontends/vectornav/encoder.hpp"
 
 namespace navfuse::frontends::vectornav::test {
 

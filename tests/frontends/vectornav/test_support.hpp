@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "frontends/common/stream_decoder.hpp"
-#include "frontends/vectornav/vn_stream_decoder.hpp"
+#include "frontends/vectornav/decoder.hpp"
 
 namespace navfuse::frontends::vectornav::test {
 

@@ -7,8 +7,8 @@
 #include <span>
 #include <string_view>
 
+#include "frontends/unicore/commands_reply.hpp"
 #include "frontends/unicore/decoder.hpp"
-#include "frontends/unicore/reply.hpp"
 
 namespace {
 

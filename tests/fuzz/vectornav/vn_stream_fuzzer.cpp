@@ -9,7 +9,7 @@
 
 #include "frontends/vectornav/binary_codec.hpp"
 #include "frontends/vectornav/commands.hpp"
-#include "frontends/vectornav/vn_stream_decoder.hpp"
+#include "frontends/vectornav/decoder.hpp"
 
 namespace {
 

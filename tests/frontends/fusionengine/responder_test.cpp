@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "frontends/fusionengine/device_control.hpp"
+#include "frontends/fusionengine/responder.hpp"
 #include "test_support.hpp"
 
 namespace navfuse::frontends::fusionengine {

@@ -14,14 +14,14 @@
 #include <string_view>
 
 #include "frontends/common/stream_decoder.hpp"
-#include "frontends/vectornav/ascii_mapper.hpp"
 #include "frontends/vectornav/ascii_sentence.hpp"
-#include "frontends/vectornav/binary_mapper.hpp"
 #include "frontends/vectornav/binary_message.hpp"
+#include "frontends/vectornav/decoder_ascii.hpp"
 #include "frontends/vectornav/decoder_options.hpp"
-#include "frontends/vectornav/port_framer.hpp"
+#include "frontends/vectornav/framer.hpp"
 #include "frontends/vectornav/split_packet.hpp"
 #include "frontends/vectornav/stream_clock.hpp"
+#include "frontends/vectornav/to_core.hpp"
 
 namespace navfuse::frontends::vectornav {
 

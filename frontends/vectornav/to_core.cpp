@@ -1,4 +1,4 @@
-#include "frontends/vectornav/binary_mapper.hpp"
+#include "frontends/vectornav/to_core.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "frontends/unicore/reply.hpp"
+#include "frontends/unicore/commands_reply.hpp"
 
 #include "core/bytes/checks.hpp"
 

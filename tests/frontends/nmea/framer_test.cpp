@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/bytes/checks.hpp"
-#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/framer.hpp"
 
 namespace navfuse::frontends::nmea {
 namespace {

@@ -1,4 +1,4 @@
-#include "frontends/nmea/sentence_writer.hpp"
+#include "frontends/nmea/writer.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -11,7 +11,7 @@
 #include <string_view>
 
 #include "frontends/nmea/fields.hpp"
-#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/framer.hpp"
 
 namespace navfuse::frontends::unicore {
 

@@ -1,4 +1,4 @@
-#include "frontends/vectornav/port_framer.hpp"
+#include "frontends/vectornav/framer.hpp"
 
 #include "core/bytes/checks.hpp"
 #include "frontends/vectornav/ascii_sentence.hpp"

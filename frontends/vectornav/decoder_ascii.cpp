@@ -1,4 +1,4 @@
-#include "frontends/vectornav/ascii_mapper.hpp"
+#include "frontends/vectornav/decoder_ascii.hpp"
 
 #include <array>
 #include <charconv>
@@ -8,8 +8,8 @@
 #include "core/rotation/rotation.hpp"
 #include "core/time/gps_time.hpp"
 #include "frontends/vectornav/ascii_registers.hpp"
-#include "frontends/vectornav/binary_mapper.hpp"
 #include "frontends/vectornav/ins_status.hpp"
+#include "frontends/vectornav/to_core.hpp"
 
 namespace navfuse::frontends::vectornav {
 namespace {

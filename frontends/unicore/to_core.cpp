@@ -1,4 +1,4 @@
-#include "frontends/unicore/measurement_mapping.hpp"
+#include "frontends/unicore/to_core.hpp"
 
 #include <cmath>
 

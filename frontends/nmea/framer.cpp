@@ -1,4 +1,4 @@
-#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/framer.hpp"
 
 #include <algorithm>
 #include <cstring>

@@ -1,4 +1,4 @@
-#include "frontends/vectornav/vn_measurement_encoder.hpp"
+#include "frontends/vectornav/encoder.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -7,10 +7,10 @@
 #include "core/time/gps_time.hpp"
 #include "frontends/vectornav/ascii_registers.hpp"
 #include "frontends/vectornav/binary_codec.hpp"
-#include "frontends/vectornav/binary_mapper.hpp"
 #include "frontends/vectornav/float_cast.hpp"
 #include "frontends/vectornav/group_imu.hpp"
 #include "frontends/vectornav/ins_status.hpp"
+#include "frontends/vectornav/to_core.hpp"
 
 namespace navfuse::frontends::vectornav {
 namespace {

@@ -1,4 +1,4 @@
-#include "frontends/fusionengine/device_control.hpp"
+#include "frontends/fusionengine/responder.hpp"
 
 #include <cmath>
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "frontends/nmea/fields.hpp"
-#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/framer.hpp"
 
 namespace navfuse::frontends::nmea {
 

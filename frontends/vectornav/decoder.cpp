@@ -1,4 +1,4 @@
-#include "frontends/vectornav/vn_stream_decoder.hpp"
+#include "frontends/vectornav/decoder.hpp"
 
 #include "frontends/vectornav/binary_codec.hpp"
 
