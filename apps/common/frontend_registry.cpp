@@ -34,6 +34,21 @@ std::string known_formats() {
   return s.empty() ? std::string("(none)") : s;
 }
 
+std::vector<std::string> writable_formats() {
+  std::vector<std::string> formats;
+  for (const auto* f : frontends_list()) {
+    if (f->make_encoder != nullptr) formats.emplace_back(f->format);
+  }
+  return formats;
+}
+
+const frontends::FrontendInfo* odometry_input_frontend() {
+  for (const auto* f : frontends_list()) {
+    if (f->odometry_input && f->make_encoder != nullptr) return f;
+  }
+  return nullptr;
+}
+
 const frontends::FrontendInfo* detect_format(std::span<const std::uint8_t> head) {
   const frontends::FrontendInfo* best = nullptr;
   std::size_t best_frames = 0;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,9 +21,10 @@ inline std::vector<DeviceCommand> commands_from_sentences(const std::vector<std:
   return out;
 }
 
-// The line of `text` starting at the first occurrence of `marker`, without its line end; "" when
-// `marker` does not occur.
-inline std::string line_starting_with(std::string_view text, std::string_view marker) {
+// The line of a device's reply starting at the first occurrence of `marker` (e.g. "$VNERR"),
+// without its line end; "" when `marker` does not occur.
+inline std::string line_starting_with(std::span<const std::uint8_t> reply_bytes, std::string_view marker) {
+  const std::string_view text(reinterpret_cast<const char*>(reply_bytes.data()), reply_bytes.size());
   const auto at = text.find(marker);
   if (at == std::string_view::npos) return {};
   const auto end = text.find_first_of("\r\n", at);

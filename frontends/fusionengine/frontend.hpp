@@ -1,7 +1,7 @@
 // Registration of the FusionEngine front-end with the apps (`navfuse decode`, replay, sim).
 #pragma once
 
-#include "frontends/common/stream_decoder.hpp"
+#include "frontends/common/frontend_info.hpp"
 
 namespace navfuse::frontends::fusionengine {
 

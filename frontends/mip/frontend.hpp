@@ -1,7 +1,7 @@
 // Registration of the MIP (MicroStrain CV7) front-end with the apps: format "mip".
 #pragma once
 
-#include "frontends/common/stream_decoder.hpp"
+#include "frontends/common/frontend_info.hpp"
 
 namespace navfuse::frontends::mip {
 

@@ -1,6 +1,7 @@
 #include "frontends/unicore/commands_reply.hpp"
 
 #include "core/bytes/checks.hpp"
+#include "frontends/common/device_command.hpp"
 
 namespace navfuse::frontends::unicore {
 namespace {
@@ -71,5 +72,7 @@ void ReplyReader::feed(std::span<const std::uint8_t> bytes,
     if (const auto r = parse_reply(f)) on_reply(*r);
   });
 }
+
+std::string find_refusal(std::span<const std::uint8_t> reply_bytes) { return line_starting_with(reply_bytes, "$FAIL"); }
 
 }  // namespace navfuse::frontends::unicore

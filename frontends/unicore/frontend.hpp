@@ -1,7 +1,7 @@
 // Registration of the Unicore UM220-INS front-end with the apps (format "unicore").
 #pragma once
 
-#include "frontends/common/stream_decoder.hpp"
+#include "frontends/common/frontend_info.hpp"
 
 namespace navfuse::frontends::unicore {
 

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "core/bytes/checks.hpp"
+#include "frontends/common/device_command.hpp"
 #include "frontends/vectornav/ascii_registers.hpp"
 #include "frontends/vectornav/binary_layout.hpp"
 #include "frontends/vectornav/float_cast.hpp"
@@ -269,5 +270,7 @@ std::optional<CompassBaseline> parse_compass_baseline(const Reply& r) {
   if (!v) return std::nullopt;
   return CompassBaseline{{(*v)[0], (*v)[1], (*v)[2]}, {(*v)[3], (*v)[4], (*v)[5]}};
 }
+
+std::string find_refusal(std::span<const std::uint8_t> reply_bytes) { return line_starting_with(reply_bytes, "$VNERR"); }
 
 }  // namespace navfuse::frontends::vectornav::cmd

@@ -126,4 +126,8 @@ struct CompassBaseline {
 };
 std::optional<CompassBaseline> parse_compass_baseline(const Reply& reply);
 
+// Looks through the bytes received after a command for the device's error reply; returns the
+// first "$VNERR,..." line (ICD §1.4, Table 1.7), "" when there is none.
+std::string find_refusal(std::span<const std::uint8_t> reply_bytes);
+
 }  // namespace navfuse::frontends::vectornav::cmd

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <span>
 
-#include "frontends/common/stream_decoder.hpp"
+#include "frontends/common/frontend_info.hpp"
 
 namespace navfuse::frontends::vectornav {
 

@@ -2,6 +2,7 @@
 // fusion setup sequence read back through the reply parser.
 #include <gtest/gtest.h>
 
+#include "core/bytes/checks.hpp"
 #include "frontends/vectornav/ascii_registers.hpp"
 #include "frontends/vectornav/commands.hpp"
 #include "test_support.hpp"
@@ -145,6 +146,14 @@ TEST(VnCommands, FusionSetupSequence) {
   append_header(h, wire);
   ASSERT_EQ(measure_payload(h, {}, 1000, payload), ParseStatus::kOk);
   EXPECT_EQ(1 + wire.size() + payload + kCrcBytes, 159u);
+}
+
+// The set-up's reply check (FrontendInfo::find_refusal): the first error line, without its end.
+TEST(VnCommands, FindRefusalReturnsTheErrorLine) {
+  const std::string ok = "$VNWRG,51,1,0.1,0.01*5F\r\n";  // L3741 as a write reply
+  EXPECT_EQ(find_refusal(bytes::as_bytes(ok)), "");
+  const std::string refused = ok + "$VNERR,03*72\r\n$VNERR,0C*02\r\n";
+  EXPECT_EQ(find_refusal(bytes::as_bytes(refused)), "$VNERR,03*72");
 }
 
 }  // namespace
