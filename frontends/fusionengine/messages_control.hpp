@@ -292,6 +292,30 @@ enum class MessageRate : std::uint8_t {
   kOff = 0, kOnChange = 1, k10Ms = 2, k20Ms = 3, k40Ms = 4, k50Ms = 5, k100Ms = 6, k200Ms = 7,
   k500Ms = 8, k1S = 9, k2S = 10, k5S = 11, k10S = 12, k30S = 13, k60S = 14, kDefault = 0xFF,
 };
+// Output interval of each interval rate (spec L1464-1482), seconds; 0 for Off, On Change and
+// Default.
+constexpr double interval_s(MessageRate r) {
+  switch (r) {
+    case MessageRate::k10Ms: return 0.01;
+    case MessageRate::k20Ms: return 0.02;
+    case MessageRate::k40Ms: return 0.04;
+    case MessageRate::k50Ms: return 0.05;
+    case MessageRate::k100Ms: return 0.1;
+    case MessageRate::k200Ms: return 0.2;
+    case MessageRate::k500Ms: return 0.5;
+    case MessageRate::k1S: return 1.0;
+    case MessageRate::k2S: return 2.0;
+    case MessageRate::k5S: return 5.0;
+    case MessageRate::k10S: return 10.0;
+    case MessageRate::k30S: return 30.0;
+    case MessageRate::k60S: return 60.0;
+    default: return 0.0;
+  }
+}
+// Whether a rate byte is one the spec defines (Off .. 60 s, or Default).
+constexpr bool is_known_rate(std::uint8_t r) {
+  return r <= static_cast<std::uint8_t>(MessageRate::k60S) || r == static_cast<std::uint8_t>(MessageRate::kDefault);
+}
 inline constexpr std::uint16_t kAllMessages = 0xFFFF;
 inline constexpr std::uint8_t kRateFlagApplyAndSave = 0x01;
 inline constexpr std::uint8_t kRateFlagIncludeDisabled = 0x02;  // four spellings, digest §13 B11

@@ -11,27 +11,6 @@ namespace {
 using rot::kDegToRad;
 using rot::kRadToDeg;
 
-// Output interval of each interval rate (spec L1464-1482), seconds; 0 for Off / On Change.
-double interval_s(MessageRate r) {
-  switch (r) {
-    case MessageRate::k10Ms: return 0.01;
-    case MessageRate::k20Ms: return 0.02;
-    case MessageRate::k40Ms: return 0.04;
-    case MessageRate::k50Ms: return 0.05;
-    case MessageRate::k100Ms: return 0.1;
-    case MessageRate::k200Ms: return 0.2;
-    case MessageRate::k500Ms: return 0.5;
-    case MessageRate::k1S: return 1;
-    case MessageRate::k2S: return 2;
-    case MessageRate::k5S: return 5;
-    case MessageRate::k10S: return 10;
-    case MessageRate::k30S: return 30;
-    case MessageRate::k60S: return 60;
-    default: return 0;
-  }
-}
-bool valid_rate(std::uint8_t r) { return r <= static_cast<std::uint8_t>(MessageRate::k60S) || r == 0xFF; }
-
 // navfuse's FusionEngine outputs (DESIGN.md --fe-out, issue #3) and their default rates.
 std::vector<OutputRate> default_rates() {
   return {{to_u16(MessageType::kPose), MessageRate::k100Ms},
@@ -212,7 +191,7 @@ Response DeviceControl::set_config(const SetConfigMessage& m) {
 Response DeviceControl::set_message_rate(const SetMessageRateMessage& m) {
   const auto protocol = static_cast<ProtocolType>(m.protocol);
   if (protocol != ProtocolType::kFusionEngine && protocol != ProtocolType::kAll) return Response::kUnsupportedFeature;
-  if (!valid_rate(m.rate)) return Response::kValueError;
+  if (!is_known_rate(m.rate)) return Response::kValueError;
   const bool all = m.message_id == kAllMessages || protocol == ProtocolType::kAll;
   const bool include_disabled = (m.flags & kRateFlagIncludeDisabled) != 0;
   bool matched = false;
