@@ -12,8 +12,8 @@ const std::vector<const frontends::FrontendInfo*>& frontends_list() {
     // Binary protocols first: on a tie in valid frames the one with the stronger check wins
     // (CRC-32, then Fletcher, then CRC-16 / XOR-checked ASCII).
     return std::vector<const frontends::FrontendInfo*>{
-        &frontends::fusionengine_frontend(), &frontends::mip_frontend(),
-        &frontends::vectornav_frontend(), &frontends::unicore_frontend()};
+        &frontends::fusionengine::frontend(), &frontends::mip::frontend(),
+        &frontends::vectornav::frontend(), &frontends::unicore::frontend()};
   }();
   return list;
 }
@@ -32,6 +32,21 @@ std::string known_formats() {
     s += f->format;
   }
   return s.empty() ? std::string("(none)") : s;
+}
+
+std::vector<std::string> writable_formats() {
+  std::vector<std::string> formats;
+  for (const auto* f : frontends_list()) {
+    if (f->make_encoder != nullptr) formats.emplace_back(f->format);
+  }
+  return formats;
+}
+
+const frontends::FrontendInfo* odometry_input_frontend() {
+  for (const auto* f : frontends_list()) {
+    if (f->odometry_input && f->make_encoder != nullptr) return f;
+  }
+  return nullptr;
 }
 
 const frontends::FrontendInfo* detect_format(std::span<const std::uint8_t> head) {

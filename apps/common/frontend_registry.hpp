@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "frontends/common/stream_decoder.hpp"
+#include "frontends/common/frontend_info.hpp"
 
 namespace navfuse::apps {
 
@@ -17,6 +17,11 @@ const std::vector<const frontends::FrontendInfo*>& frontends_list();
 const frontends::FrontendInfo* find_frontend(std::string_view format);
 // "fe, mip, vn, unicore" for messages.
 std::string known_formats();
+// The formats navfuse can write (those with an encoder), for `navfuse sim --format`.
+std::vector<std::string> writable_formats();
+// The front-end a host uses to send wheel / vehicle speed to a fusion device
+// (FrontendInfo::odometry_input), for `navfuse sim --wheel-out`; nullptr when none is registered.
+const frontends::FrontendInfo* odometry_input_frontend();
 
 // Bytes probed for detection.
 inline constexpr std::size_t kProbeBytes = 64 * 1024;

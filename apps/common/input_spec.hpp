@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "frontends/common/stream_decoder.hpp"
+#include "frontends/common/frontend_info.hpp"
 
 namespace navfuse::apps {
 

@@ -27,11 +27,11 @@ class FeEpochEncoder {
   FeStreamRates& rates() { return rates_; }
   // The stream's writer: anything else sent on the same stream (command replies) goes through
   // it so that the whole stream has one sequence counter (spec L190).
-  fe::FusionEngineWriter& writer() { return writer_; }
+  frontends::fusionengine::FusionEngineWriter& writer() { return writer_; }
 
  private:
   FeStreamRates rates_;
-  fe::FusionEngineWriter writer_;
+  frontends::fusionengine::FusionEngineWriter writer_;
   ImuSample imu_;                        // reused: no allocation per epoch
   std::uint64_t gnss_at_last_info_ = 0;  // for GNSSInfo "on change"
 };

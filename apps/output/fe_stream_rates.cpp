@@ -2,8 +2,8 @@
 
 namespace navfuse::apps {
 
-using fe::MessageRate;
-using fe::MessageType;
+using frontends::fusionengine::MessageRate;
+using frontends::fusionengine::MessageType;
 
 FeStreamRates::FeStreamRates()
     : entries_{{{MessageType::kPose}, {MessageType::kPoseAux}, {MessageType::kGnssInfo}, {MessageType::kImuOutput}}} {}
@@ -15,7 +15,7 @@ FeStreamRates::Entry* FeStreamRates::find(MessageType type) {
   return nullptr;
 }
 
-fe::MessageRate FeStreamRates::rate(MessageType type) const {
+frontends::fusionengine::MessageRate FeStreamRates::rate(MessageType type) const {
   for (const Entry& e : entries_) {
     if (e.type == type) return e.rate;
   }
@@ -25,10 +25,10 @@ fe::MessageRate FeStreamRates::rate(MessageType type) const {
 bool FeStreamRates::set(std::uint16_t message_id, MessageRate rate) {
   const auto apply = [rate](Entry& e) {
     e.rate = rate;
-    const double p = fe::interval_s(rate);
+    const double p = frontends::fusionengine::interval_s(rate);
     e.interval = OutputRate(p > 0 ? 1.0 / p : 0.0);
   };
-  if (message_id == fe::kAllMessages) {
+  if (message_id == frontends::fusionengine::kAllMessages) {
     for (Entry& e : entries_) apply(e);
     return true;
   }

@@ -15,22 +15,22 @@ namespace navfuse::apps {
 class FeStreamRates {
  public:
   struct Entry {
-    fe::MessageType type;
-    fe::MessageRate rate = fe::MessageRate::kDefault;
+    frontends::fusionengine::MessageType type;
+    frontends::fusionengine::MessageRate rate = frontends::fusionengine::MessageRate::kDefault;
     OutputRate interval{0.0};  // for interval rates (k10Ms ... k60S)
   };
   FeStreamRates();
 
   // False for a message navfuse does not stream (the device answers "unsupported").
-  bool set(std::uint16_t message_id, fe::MessageRate rate);
-  fe::MessageRate rate(fe::MessageType type) const;
+  bool set(std::uint16_t message_id, frontends::fusionengine::MessageRate rate);
+  frontends::fusionengine::MessageRate rate(frontends::fusionengine::MessageType type) const;
   // Whether `type` goes out at this epoch. `default_due` is when it would at its default rate,
   // `on_change` whether its content changed since it last went out.
-  bool due(fe::MessageType type, std::int64_t time_ns, bool default_due, bool on_change);
+  bool due(frontends::fusionengine::MessageType type, std::int64_t time_ns, bool default_due, bool on_change);
   const std::array<Entry, 4>& entries() const { return entries_; }
 
  private:
-  Entry* find(fe::MessageType type);
+  Entry* find(frontends::fusionengine::MessageType type);
   std::array<Entry, 4> entries_;
 };
 

@@ -1,6 +1,6 @@
 #include "apps/output/mip_epoch_encoder.hpp"
 
-#include "frontends/mip/solution_encoder.hpp"
+#include "frontends/mip/encoder_solution.hpp"
 
 namespace navfuse::apps {
 

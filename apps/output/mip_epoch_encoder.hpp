@@ -1,7 +1,7 @@
 // The MIP stream of navfuse's solution, one output epoch at a time: the encoder every MIP output
 // uses (--mip-out files of replay, the --mip-out device link of run). At each pose epoch the
 // filter data set 0x82 a 3DM-CV7 streams (DESIGN.md --mip-out, contract), encoded by the MIP
-// front-end (frontends/mip/solution_encoder.hpp); nothing at the other epochs.
+// front-end (frontends/mip/encoder_solution.hpp); nothing at the other epochs.
 #pragma once
 
 #include <cstdint>

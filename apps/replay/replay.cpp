@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "apps/common/command_error.hpp"
+#include "apps/common/frontend_registry.hpp"
 #include "apps/common/input_spec.hpp"
 #include "apps/lcm/lcm_pose_writer.hpp"
 #include "apps/output/csv_pose_writer.hpp"
@@ -22,11 +23,8 @@ namespace navfuse::apps {
 namespace {
 
 config::DeviceProfile profile_for_format(std::string_view format) {
-  if (format == "vn") return config::DeviceProfile::kVn300;
-  if (format == "mip") return config::DeviceProfile::kCv7;
-  if (format == "unicore") return config::DeviceProfile::kUm220;
-  if (format == "fe") return config::DeviceProfile::kFusionEngine;
-  return config::DeviceProfile::kGeneric;
+  const frontends::FrontendInfo* f = find_frontend(format);
+  return f != nullptr ? f->default_profile : config::DeviceProfile::kGeneric;
 }
 
 // Replay's use of the stream: every epoch to the writers (IMU output), and at the output rate

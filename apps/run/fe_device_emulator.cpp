@@ -7,6 +7,8 @@
 namespace navfuse::apps {
 namespace {
 
+namespace fe = frontends::fusionengine;
+
 using fe::MessageRate;
 using fe::MessageType;
 

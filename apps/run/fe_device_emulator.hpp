@@ -10,9 +10,9 @@
 #include "apps/output/fe_epoch_encoder.hpp"
 #include "apps/run/device_emulator.hpp"
 #include "core/config/config.hpp"
-#include "frontends/fusionengine/device_control.hpp"
 #include "frontends/fusionengine/framer.hpp"
 #include "frontends/fusionengine/messages_control.hpp"
+#include "frontends/fusionengine/responder.hpp"
 
 namespace navfuse::apps {
 
@@ -25,15 +25,15 @@ class FeDeviceEmulator final : public DeviceEmulator {
                CommandEffects& effects) override;
 
  private:
-  void handle(const fe::Frame& frame, std::vector<std::uint8_t>& reply, CommandEffects& effects);
-  fe::Framer& framer_for(io::PeerId peer);
+  void handle(const frontends::fusionengine::Frame& frame, std::vector<std::uint8_t>& reply, CommandEffects& effects);
+  frontends::fusionengine::Framer& framer_for(io::PeerId peer);
 
   config::Config config_;
   // SetConfig / GetConfig / SaveConfig are answered by the front-end's device-compatible
   // handler; what it changes in the config is handed to the engine as EngineActions.
-  fe::DeviceControl control_;
+  frontends::fusionengine::DeviceControl control_;
   FeEpochEncoder encoder_;  // its writer: one sequence counter for everything this link sends
-  std::map<io::PeerId, std::unique_ptr<fe::Framer>> framers_;
+  std::map<io::PeerId, std::unique_ptr<frontends::fusionengine::Framer>> framers_;
   OutputEpoch last_;  // for MessageRequest: the newest solution
   bool have_last_ = false;
 };

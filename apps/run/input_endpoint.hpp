@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/io/uri.hpp"
-#include "frontends/common/stream_decoder.hpp"
+#include "frontends/common/frontend_info.hpp"
 
 namespace navfuse::apps {
 

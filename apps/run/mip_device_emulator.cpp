@@ -1,8 +1,9 @@
 #include "apps/run/mip_device_emulator.hpp"
 
 #include "core/bytes/byte_reader.hpp"
-#include "frontends/mip/commands.hpp"
 #include "filter/engine.hpp"
+#include "frontends/mip/commands.hpp"
+#include "frontends/mip/encoder_solution.hpp"
 #include "frontends/mip/packet.hpp"
 
 namespace navfuse::apps {

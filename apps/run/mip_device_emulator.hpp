@@ -1,6 +1,6 @@
 // --mip-out: navfuse as a CV7 on the link. Streams what replay's --mip-out file holds (the filter
 // data set 0x82 at each pose, apps/output/mip_epoch_encoder.hpp) unless a client disabled that
-// stream or set the device idle, and answers MIP commands as the CV7 does (frontends/mip/command_responder.hpp):
+// stream or set the device idle, and answers MIP commands as the CV7 does (frontends/mip/responder.hpp):
 // external aiding (0x13) is handed to the filter, and the filter commands with an effect on the
 // estimate — reset (0x0D,0x01), sensor-to-vehicle rotation (0x0C,0x31), antenna offsets
 // (0x0D,0x54) — are applied to the engine as well as being acknowledged.
@@ -13,8 +13,8 @@
 
 #include "apps/output/mip_epoch_encoder.hpp"
 #include "apps/run/device_emulator.hpp"
-#include "frontends/mip/command_responder.hpp"
 #include "frontends/mip/framer.hpp"
+#include "frontends/mip/responder.hpp"
 
 namespace navfuse::apps {
 

@@ -25,32 +25,9 @@ void gauss_markov(Eigen::Vector3d& e, const Eigen::Vector3d& sigma, double dt_s,
 
 }  // namespace
 
-DeviceErrorClass device_error_class(std::string_view format, double imu_rate_hz) {
-  DeviceErrorClass c;
-  if (format == "vn") {
-    c.roll_pitch_std_rad = 0.05 * kDeg;
-    c.heading_std_rad = 0.2 * kDeg;
-    c.rate_hz = imu_rate_hz;
-  } else if (format == "mip") {
-    c.roll_pitch_std_rad = 0.1 * kDeg;
-    c.heading_std_rad = 0.5 * kDeg;
-    c.rate_hz = imu_rate_hz;
-  } else if (format == "unicore") {
-    c.horizontal_std_m = 1.5;
-    c.vertical_std_m = 3.0;
-    c.velocity_std_mps = 0.1;
-    c.roll_pitch_std_rad = 0.3 * kDeg;
-    c.heading_std_rad = 1.0 * kDeg;
-    c.outage_accel_std_mps2 = 0.03;
-    c.rate_hz = 5.0;
-  } else {  // fe
-    c.horizontal_std_m = 0.5;
-    c.vertical_std_m = 1.0;
-    c.velocity_std_mps = 0.03;
-    c.roll_pitch_std_rad = 0.05 * kDeg;
-    c.heading_std_rad = 0.2 * kDeg;
-    c.rate_hz = 10.0;
-  }
+DeviceErrorClass device_error_class(const frontends::FrontendInfo& frontend, double imu_rate_hz) {
+  DeviceErrorClass c = frontend.device_errors;
+  if (c.rate_is_imu_rate) c.rate_hz = imu_rate_hz;
   return c;
 }
 

@@ -11,36 +11,26 @@
 // and a quadratically growing position error (Groves §14.2.1: horizontal drift ~ 1/2 b t^2),
 // which decays back (tau 5 s) once GNSS returns. The reported 1-sigma values are the model's.
 //
-// The class figures below are typical of the device classes, not datasheet guarantees:
-//   vn (VN-300, dual-antenna, industrial MEMS)     1.0 m / 2.0 m, 0.05 m/s, 0.05 deg r/p, 0.2 deg hdg
-//   mip (3DM-CV7-INS, single antenna)              1.0 m / 2.0 m, 0.05 m/s, 0.1 deg r/p, 0.5 deg hdg
-//   unicore (UM220-INS, automotive MEMS)           1.5 m / 3.0 m, 0.1 m/s, 0.3 deg r/p, 1.0 deg hdg
-//   fe (Point One, GNSS/INS with corrections)      0.5 m / 1.0 m, 0.03 m/s, 0.05 deg r/p, 0.2 deg hdg
+// The figures of each device class (frontends::DeviceErrorClass) come with its front-end
+// (FrontendInfo::device_errors, in frontends/<protocol>/frontend.cpp).
 #pragma once
 
 #include <cstdint>
-#include <string_view>
 
 #include <Eigen/Core>
 
 #include "apps/sim/random.hpp"
 #include "apps/sim/trajectory.hpp"
 #include "core/measurements/measurements.hpp"
+#include "frontends/common/frontend_info.hpp"
 
 namespace navfuse::apps {
 
-struct DeviceErrorClass {
-  double horizontal_std_m = 1.0, vertical_std_m = 2.0, position_corr_time_s = 60.0;
-  double velocity_std_mps = 0.05, velocity_corr_time_s = 10.0;
-  double roll_pitch_std_rad = 0.0, heading_std_rad = 0.0, attitude_corr_time_s = 120.0;
-  double outage_accel_std_mps2 = 0.01;  // dead-reckoning drift per outage
-  double rate_hz = 200.0;               // solution output rate
-  double alignment_s = 2.0;             // no solution (initialising) before this
-};
+using frontends::DeviceErrorClass;
 
-// Figures for a format ("vn", "mip", "unicore", "fe"); `imu_rate_hz` is the rate of vn/mip,
-// whose INS output runs with the IMU.
-DeviceErrorClass device_error_class(std::string_view format, double imu_rate_hz);
+// The figures of a front-end's device class, with the solution rate resolved: `imu_rate_hz` for a
+// device whose INS output runs with the IMU.
+DeviceErrorClass device_error_class(const frontends::FrontendInfo& frontend, double imu_rate_hz);
 
 class DeviceSolutionModel {
  public:

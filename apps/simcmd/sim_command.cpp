@@ -67,9 +67,12 @@ SimReport run_sim(const SimOptions& options) {
   if (options.seed) scenario.seed = *options.seed;
   const frontends::FrontendInfo& frontend = frontend_or_throw(options.format);
   const frontends::FrontendInfo* wheel_frontend = nullptr;
-  if (!options.wheel_out_path.empty()) wheel_frontend = &frontend_or_throw("fe");
+  if (!options.wheel_out_path.empty()) {
+    wheel_frontend = odometry_input_frontend();
+    if (wheel_frontend == nullptr) throw CommandError("--wheel-out: no front-end carries wheel / vehicle speed inputs");
+  }
 
-  DeviceErrorClass device = device_error_class(options.format, scenario.imu.rate_hz);
+  DeviceErrorClass device = device_error_class(frontend, scenario.imu.rate_hz);
   if (options.device_rate_hz) device.rate_hz = *options.device_rate_hz;
   std::optional<DeviceSolutionModel> device_model;
   if (device.rate_hz > 0.0) device_model.emplace(device, scenario.start_time_ns, scenario.seed);
@@ -92,6 +95,7 @@ SimReport run_sim(const SimOptions& options) {
   std::vector<std::uint8_t> bytes;
   bytes.reserve(4096);
   SimReport report;
+  if (wheel_frontend) report.wheel_format = wheel_frontend->format;
   const auto emit = [&](const Measurement& m, frontends::MeasurementEncoder& enc, OutputFile& file,
                         std::map<std::string, std::uint64_t>& written) {
     bytes.clear();
@@ -141,7 +145,7 @@ void print_report(const SimOptions& o, const SimReport& r, std::ostream& os) {
   counts(r.written);
   os << "\n";
   if (!o.wheel_out_path.empty()) {
-    os << o.wheel_out_path << " [fe]: " << r.wheel_bytes << " bytes;";
+    os << o.wheel_out_path << " [" << r.wheel_format << "]: " << r.wheel_bytes << " bytes;";
     counts(r.wheel_written);
     os << "\n";
   }
@@ -169,7 +173,7 @@ void add_sim_command(CLI::App& root, int& exit_code) {
       ->required();
   sub->add_option("--format", o.format, "Device protocol of the log")
       ->required()
-      ->check(CLI::IsMember({"vn", "mip", "fe", "unicore"}));
+      ->check(CLI::IsMember(writable_formats()));
   sub->add_option("--out", o.out_path, "Device log to write")->required();
   sub->add_option("--truth", o.truth_path, "Also write the truth as CSV");
   CLI::Option* seed = sub->add_option("--seed", args->seed, "Random seed (default: the scenario's)");

@@ -29,6 +29,7 @@ struct SimOptions {
 struct SimReport {
   std::map<std::string, std::uint64_t> written;  // measurements per kind in the device log
   std::map<std::string, std::uint64_t> wheel_written;
+  std::string wheel_format;  // protocol of the --wheel-out log
   std::map<std::string, std::uint64_t> dropped;  // kinds the protocol cannot carry
   std::uint64_t truth_rows = 0;
   std::uint64_t out_bytes = 0, wheel_bytes = 0;

@@ -67,15 +67,4 @@ class MeasurementEncoder {
   virtual bool encode(const Measurement& m, std::vector<std::uint8_t>& out) = 0;
 };
 
-// What a front-end registers with the apps.
-struct FrontendInfo {
-  std::string_view format;       // "fe", "mip", "vn", "unicore"
-  std::string_view description;  // one line for --help
-  // Confidence that `head` (the first bytes of a stream, up to 64 KiB) is this protocol: the
-  // number of complete, checksum-valid frames found in it. 0 = not this protocol.
-  std::size_t (*probe)(std::span<const std::uint8_t> head);
-  std::unique_ptr<StreamDecoder> (*make_decoder)();
-  std::unique_ptr<MeasurementEncoder> (*make_encoder)();
-};
-
 }  // namespace navfuse::frontends

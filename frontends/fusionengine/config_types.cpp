@@ -1,6 +1,6 @@
 #include "frontends/fusionengine/config_types.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 std::string_view to_string(ConfigType t) {
   switch (t) {
@@ -65,4 +65,4 @@ std::size_t config_value_size(std::uint16_t config_type) {
   }
 }
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

@@ -13,7 +13,7 @@
 #include "frontends/fusionengine/payload_reader.hpp"
 #include "frontends/fusionengine/payload_writer.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 // ConfigType (u16), spec L963-1003.
 enum class ConfigType : std::uint16_t {
@@ -187,4 +187,4 @@ std::optional<C> parse_config(std::span<const std::uint8_t> bytes) {
 // Value size the spec defines for a config type, or 0 when unknown / variable.
 std::size_t config_value_size(std::uint16_t config_type);
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

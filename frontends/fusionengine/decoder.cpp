@@ -6,7 +6,7 @@
 #include "frontends/fusionengine/payload_reader.hpp"
 #include "frontends/fusionengine/record_builder.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 namespace {
 
 constexpr std::string_view kProtocol = "fe";
@@ -74,4 +74,4 @@ void FusionEngineDecoder::on_frame(const Frame& frame, frontends::DecodeSink& si
   }
 }
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

@@ -14,7 +14,7 @@
 #include "frontends/fusionengine/message_catalog.hpp"
 #include "frontends/fusionengine/to_core.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 struct DecoderOptions {
   // WheelConfig the device was configured with, for tick rollover / direction (spec L1111-1172).
@@ -42,4 +42,4 @@ class FusionEngineDecoder final : public frontends::StreamDecoder {
   MeasurementMapper mapper_;
 };
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

@@ -2,7 +2,7 @@
 
 #include <type_traits>
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 namespace {
 
 template <class In, class Out, class Layout>
@@ -69,4 +69,4 @@ bool FusionEngineEncoder::encode(const Measurement& m, std::vector<std::uint8_t>
       m);
 }
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

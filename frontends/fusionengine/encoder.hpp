@@ -17,7 +17,7 @@
 #include "frontends/common/stream_decoder.hpp"
 #include "frontends/fusionengine/writer.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 struct EncoderOptions {
   bool sensor_inputs = false;  // write input messages (§3.5) rather than raw outputs (§3.6)
@@ -33,4 +33,4 @@ class FusionEngineEncoder final : public frontends::MeasurementEncoder {
   FusionEngineWriter writer_;
 };
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

@@ -28,7 +28,7 @@
 #include "frontends/fusionengine/message_catalog.hpp"
 #include "frontends/fusionengine/wire.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 struct Frame {
   Header header;
@@ -161,4 +161,4 @@ class Framer {
   std::uint64_t framed_bytes_ = 0;
 };
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

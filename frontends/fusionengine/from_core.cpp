@@ -9,7 +9,7 @@
 #include "core/rotation/rotation.hpp"
 #include "core/time/gps_time.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 namespace {
 
 using rot::kRadToDeg;
@@ -370,4 +370,4 @@ RosGpsFixMessage gps_fix_from(const GnssVelocity& v) {
   return m;
 }
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

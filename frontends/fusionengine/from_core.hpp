@@ -16,7 +16,7 @@
 #include "frontends/fusionengine/messages_sensor.hpp"
 #include "frontends/fusionengine/messages_solution.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 Timestamp p1_time_of(const MeasurementHeader& h);
 Timestamp gps_time_of(const MeasurementHeader& h);
@@ -66,4 +66,4 @@ inline constexpr double kMinTrackSpeedMps = 1e-3;
 RosGpsFixMessage gps_fix_from(const GnssPosition& p);
 RosGpsFixMessage gps_fix_from(const GnssVelocity& v);
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

@@ -1,12 +1,12 @@
 // Registration of the FusionEngine front-end with the apps (`navfuse decode`, replay, sim).
 #pragma once
 
-#include "frontends/common/stream_decoder.hpp"
+#include "frontends/common/frontend_info.hpp"
 
-namespace navfuse::frontends {
+namespace navfuse::frontends::fusionengine {
 
 // format "fe": probe() counts CRC-valid FusionEngine frames in the head bytes; make_decoder()
-// returns a fe::FusionEngineDecoder, make_encoder() a fe::FusionEngineEncoder.
-const FrontendInfo& fusionengine_frontend();
+// returns a FusionEngineDecoder, make_encoder() a FusionEngineEncoder.
+const FrontendInfo& frontend();
 
-}  // namespace navfuse::frontends
+}  // namespace navfuse::frontends::fusionengine

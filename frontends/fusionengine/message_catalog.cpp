@@ -4,7 +4,7 @@
 #include <type_traits>
 #include <utility>
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 namespace {
 
 template <std::size_t... I>
@@ -51,4 +51,4 @@ std::optional<std::string_view> message_name(std::uint16_t message_type) {
   return std::nullopt;
 }
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

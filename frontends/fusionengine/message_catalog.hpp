@@ -14,7 +14,7 @@
 #include "frontends/fusionengine/messages_solution.hpp"
 #include "frontends/fusionengine/messages_status.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 using AllMessages = std::tuple<
     PoseMessage, GnssInfoMessage, GnssSatelliteMessage, PoseAuxMessage, CalibrationStatusMessage,
@@ -66,4 +66,4 @@ class MessageSet {
   AllMessages all_;
 };
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

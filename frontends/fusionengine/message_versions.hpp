@@ -12,7 +12,7 @@
 
 #include "frontends/fusionengine/messages_solution.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 // Pose: undulation was "added in PoseMessage version 1.1" and flags "in version 1.2" (L1735-1736;
 // "1.N" is wire version N, digest §13 B13). Version 0 senders leave that space reserved (zero),
@@ -33,4 +33,4 @@ bool adapt_to_version(M&, std::uint8_t) {
   return true;
 }
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

@@ -8,7 +8,7 @@
 
 #include "frontends/fusionengine/wire.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 // CommandResponseMessage 13000, 8 bytes (spec §3.2.1 L1562-1590).
 struct CommandResponseMessage {
@@ -411,4 +411,4 @@ struct SupportedIoInterfacesMessage {
   }
 };
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

@@ -8,7 +8,7 @@
 
 #include "frontends/fusionengine/wire.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 // ROSPose 12000, 64 bytes: ENU offset from the first valid pose + body->ENU quaternion (x,y,z,w).
 struct RosPoseMessage {
@@ -111,4 +111,4 @@ struct RosImuMessage {
   }
 };
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

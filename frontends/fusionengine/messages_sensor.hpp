@@ -9,7 +9,7 @@
 
 #include "frontends/fusionengine/wire.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 // Scaled-integer sentinels and scale factors. The spec writes "2e-7", "2e-16", "2e-20" and
 // "2e-10" in places (L2187-2193, L2404-2407, L2432) next to 2^-n elsewhere; they are 2^-n
@@ -324,4 +324,4 @@ struct InputDataWrapperMessage {
   }
 };
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

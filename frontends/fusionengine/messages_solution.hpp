@@ -10,7 +10,7 @@
 
 #include "frontends/fusionengine/wire.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 // Pose undulation "Set to -32768 if invalid" (spec L1736).
 inline constexpr std::int16_t kInvalidUndulationCm = -32768;
@@ -303,4 +303,4 @@ struct GnssSignalsMessage {
   }
 };
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

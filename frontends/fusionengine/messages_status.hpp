@@ -10,7 +10,7 @@
 
 #include "frontends/fusionengine/wire.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 // SystemStatus 10500, 128 bytes (spec §3.7.1 L2473-2486). Upstream v1.25.0 (version 1) puts a
 // processor temperature at offset 10 inside the spec's reserved bytes; it is read and written
@@ -257,4 +257,4 @@ struct Sta5635IqDataMessage {
   }
 };
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

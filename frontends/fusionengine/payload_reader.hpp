@@ -19,7 +19,7 @@
 #include "core/bytes/byte_reader.hpp"
 #include "frontends/fusionengine/wire.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 class PayloadReader {
  public:
@@ -88,4 +88,4 @@ bool decode_payload(std::span<const std::uint8_t> payload, M& msg) {
   return r.ok();
 }
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

@@ -11,7 +11,7 @@
 #include "core/bytes/byte_writer.hpp"
 #include "frontends/fusionengine/wire.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 class PayloadWriter {
  public:
@@ -57,4 +57,4 @@ class PayloadWriter {
   bytes::LeWriter w_;
 };
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

@@ -4,7 +4,7 @@
 
 #include "frontends/fusionengine/config_types.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 namespace {
 
 // Hex of at most this many bytes: blobs (raw wrapped data, IQ samples) can be large and the
@@ -92,4 +92,4 @@ void RecordBuilder::config_value(std::string_view name, std::uint16_t config_typ
   if (!listed) blob(name, b, length);
 }
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

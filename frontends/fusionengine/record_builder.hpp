@@ -12,7 +12,7 @@
 #include "frontends/common/stream_decoder.hpp"
 #include "frontends/fusionengine/wire.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 class RecordBuilder {
  public:
@@ -67,4 +67,4 @@ class RecordBuilder {
   std::string prefix_;
 };
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

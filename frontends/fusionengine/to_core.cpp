@@ -4,7 +4,7 @@
 
 #include "core/rotation/rotation.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 namespace {
 
 using rot::kDegToRad;
@@ -474,4 +474,4 @@ void MeasurementMapper::on(const ConfigResponseMessage& m, Sink&) {
   if (m.response == static_cast<std::uint8_t>(Response::kOk)) apply_config(m.config_type, m.value);
 }
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

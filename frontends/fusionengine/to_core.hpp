@@ -22,7 +22,7 @@
 #include "frontends/fusionengine/messages_sensor.hpp"
 #include "frontends/fusionengine/messages_solution.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 // NavMode and GnssFixType of a Pose SolutionType (the inverse of solution_type_of()).
 NavMode nav_mode_of(SolutionType type);
@@ -79,4 +79,4 @@ class MeasurementMapper {
   Timestamp pending_p1_;
 };
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

@@ -12,7 +12,7 @@
 #include <limits>
 #include <string_view>
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 // ---------------------------------------------------------------------------------------------
 // Header (spec §2.3 L179-193, digest §1.3).
@@ -208,4 +208,4 @@ enum class Response : std::uint8_t {
   kUnsupportedInterface = 10,
 };
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

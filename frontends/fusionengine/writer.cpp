@@ -4,7 +4,7 @@
 #include "core/bytes/byte_writer.hpp"
 #include "core/bytes/checks.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 std::uint32_t default_source_id(std::uint16_t message_type) {
   switch (static_cast<MessageType>(message_type)) {
@@ -53,4 +53,4 @@ const std::vector<std::uint8_t>& FusionEngineWriter::imu_output(const ImuSample&
   return frame(m);
 }
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

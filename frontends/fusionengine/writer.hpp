@@ -20,7 +20,7 @@
 #include "frontends/fusionengine/message_catalog.hpp"
 #include "frontends/fusionengine/payload_writer.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 // Per-frame overrides of the header fields the writer normally fills in.
 struct FrameOptions {
@@ -97,4 +97,4 @@ class FusionEngineWriter {
   std::vector<std::uint8_t> buffer_;
 };
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

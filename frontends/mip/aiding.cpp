@@ -6,8 +6,8 @@
 #include "core/bytes/checks.hpp"
 #include "core/rotation/rotation.hpp"
 #include "frontends/mip/packet.hpp"
-#include "frontends/mip/packet_writer.hpp"
 #include "frontends/mip/units.hpp"
+#include "frontends/mip/writer.hpp"
 
 namespace navfuse::frontends::mip {
 namespace {

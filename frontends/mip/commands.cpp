@@ -1,10 +1,12 @@
 #include "frontends/mip/commands.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "frontends/mip/field_schema.hpp"
+#include "frontends/mip/framer.hpp"
 #include "frontends/mip/packet.hpp"
-#include "frontends/mip/packet_writer.hpp"
+#include "frontends/mip/writer.hpp"
 
 namespace navfuse::frontends::mip {
 namespace {
@@ -158,6 +160,27 @@ bool parse_reply(std::span<const std::uint8_t> payload, std::vector<ReplyEntry>&
     }
   }
   return !walk.malformed();
+}
+
+std::string find_refusal(std::span<const std::uint8_t> reply_bytes) {
+  Framer framer;
+  std::string refusal;
+  std::vector<ReplyEntry> entries;
+  framer.feed(reply_bytes, [&](const PacketView& p) {
+    if (!refusal.empty() || !set::is_command(p.desc_set)) return;
+    entries.clear();
+    if (!parse_reply(p.payload, entries)) return;
+    for (const auto& e : entries) {
+      if (e.code != ReplyCode::kAck) {
+        char text[64];
+        std::snprintf(text, sizeof text, "MIP NACK %u for command (0x%02X,0x%02X)",
+                      static_cast<unsigned>(e.code), p.desc_set, e.cmd_desc);
+        refusal = text;
+        return;
+      }
+    }
+  });
+  return refusal;
 }
 
 }  // namespace navfuse::frontends::mip

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -76,5 +77,8 @@ struct ReplyEntry {
 };
 // Parses a validated reply payload of a command set. Returns false on a malformed field walk.
 bool parse_reply(std::span<const std::uint8_t> payload, std::vector<ReplyEntry>& out);
+// Looks through the bytes a CV7 sent after a command for a NACK in a reply packet; returns a
+// one-line description of the first one ("MIP NACK <code> for command (0xSS,0xDD)"), "" when none.
+std::string find_refusal(std::span<const std::uint8_t> reply_bytes);
 
 }  // namespace navfuse::frontends::mip

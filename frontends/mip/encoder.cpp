@@ -5,12 +5,12 @@
 #include "core/geodesy/geoid.hpp"
 #include "core/rotation/rotation.hpp"
 #include "frontends/mip/aiding.hpp"
+#include "frontends/mip/encoder_solution.hpp"
 #include "frontends/mip/gnss_fix.hpp"
-#include "frontends/mip/packet_writer.hpp"
 #include "frontends/mip/protocol.hpp"
-#include "frontends/mip/solution_encoder.hpp"
 #include "frontends/mip/time_fields.hpp"
 #include "frontends/mip/units.hpp"
+#include "frontends/mip/writer.hpp"
 
 namespace navfuse::frontends::mip {
 namespace {

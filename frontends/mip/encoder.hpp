@@ -8,7 +8,7 @@
 //   GnssPosition   -> 0x91 / 0x92 / 0x94 by receiver_id 0 / 1 / 2: D3 + 0x03 LLH + 0x0B fix
 //   GnssVelocity   -> same sets: D3 + 0x05 NED velocity + 0x0B fix
 //   GnssHeading    -> 0x82: D3 + 0x49 dual-antenna status
-//   NavSolution    -> 0x82 filter packets (solution_encoder.hpp)
+//   NavSolution    -> 0x82 filter packets (encoder_solution.hpp)
 //   ExternalPosition / ExternalVelocity / ExternalHeading -> 0x13 aiding commands (timebase 2,
 //                     GPS ns), preceded by a frame configuration when a lever arm is set
 // WheelSpeeds and WheelTicks have no MIP carrier: encode() returns false for them.

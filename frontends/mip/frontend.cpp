@@ -1,32 +1,43 @@
 #include "frontends/mip/frontend.hpp"
 
+#include "core/rotation/rotation.hpp"
+#include "frontends/mip/commands.hpp"
 #include "frontends/mip/decoder.hpp"
 #include "frontends/mip/encoder.hpp"
 #include "frontends/mip/framer.hpp"
 
-namespace navfuse::frontends {
+namespace navfuse::frontends::mip {
 namespace {
 
 std::size_t probe(std::span<const std::uint8_t> head) {
-  mip::Framer framer;
-  framer.feed(head, [](const mip::PacketView&) {});
+  Framer framer;
+  framer.feed(head, [](const PacketView&) {});
   return framer.counters().frames;
 }
 
-std::unique_ptr<StreamDecoder> make_decoder() { return std::make_unique<mip::MipDecoder>(); }
-std::unique_ptr<MeasurementEncoder> make_encoder() { return std::make_unique<mip::MipEncoder>(); }
+std::unique_ptr<StreamDecoder> make_decoder() { return std::make_unique<MipDecoder>(); }
+std::unique_ptr<MeasurementEncoder> make_encoder() { return std::make_unique<MipEncoder>(); }
+std::vector<DeviceCommand> setup_commands() { return cv7_setup_sequence(); }
 
 }  // namespace
 
-const FrontendInfo& mip_frontend() {
+const FrontendInfo& frontend() {
   static const FrontendInfo info{
       .format = "mip",
       .description = "MicroStrain MIP (3DM-CV7): sensor, filter, GNSS data and 0x13 aiding",
       .probe = &probe,
       .make_decoder = &make_decoder,
       .make_encoder = &make_encoder,
+      .default_profile = config::DeviceProfile::kCv7,
+      .setup_commands = &setup_commands,
+      .find_refusal = &find_refusal,
+      // 3DM-CV7-INS, single antenna, INS output with the IMU: typical of the class, not datasheet
+      // guarantees.
+      .device_errors = {.roll_pitch_std_rad = 0.1 * rot::kDegToRad,
+                        .heading_std_rad = 0.5 * rot::kDegToRad,
+                        .rate_is_imu_rate = true},
   };
   return info;
 }
 
-}  // namespace navfuse::frontends
+}  // namespace navfuse::frontends::mip

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "core/measurements/measurements.hpp"
-#include "frontends/mip/packet_writer.hpp"
+#include "frontends/mip/writer.hpp"
 
 namespace navfuse::frontends::mip {
 

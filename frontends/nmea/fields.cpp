@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 
 constexpr std::size_t kMaxHexDigits32 = 8;   // UINT hex: "a maximum of 8 characters" (L183)
@@ -131,4 +131,4 @@ bool iequals(std::string_view a, std::string_view b) {
   return true;
 }
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

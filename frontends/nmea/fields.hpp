@@ -9,7 +9,7 @@
 #include <optional>
 #include <string_view>
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 
 // Longest field list accepted. The longest documented sentence, h51 GSV/GSA, has 21 fields; a
 // 128-byte sentence could hold 127 empty ones, which is corruption, not data.
@@ -68,4 +68,4 @@ std::optional<Count> parse_count(std::string_view field);
 // Case-insensitive ASCII comparison (message names are not case-sensitive, L154).
 bool iequals(std::string_view a, std::string_view b);
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

@@ -2,7 +2,7 @@
 #include "frontends/nmea/record_fields.hpp"
 #include "frontends/nmea/sentences.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 constexpr std::size_t kGgaDataFields = 14;  // syntax line L866
 constexpr std::string_view kUnitMetres = "M";
@@ -58,4 +58,4 @@ void append_fields(const Gga& s, frontends::FrameRecord& r) {
   put(r, "diff_station", s.diff_station);
 }
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

@@ -2,7 +2,7 @@
 #include "frontends/nmea/record_fields.hpp"
 #include "frontends/nmea/sentences.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 constexpr std::size_t kGllDataFields = 7;  // syntax line L898
 }  // namespace
@@ -40,4 +40,4 @@ void append_fields(const Gll& s, frontends::FrameRecord& r) {
   put(r, "mode", s.mode);
 }
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

@@ -4,7 +4,7 @@
 #include "frontends/nmea/record_fields.hpp"
 #include "frontends/nmea/sentences.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 // h30: Smode, FS, 12 satellites, PDOP, HDOP, VDOP (L1146); h51 adds systemID (L922).
 constexpr std::size_t kGsaH30DataFields = 2 + kGsaSatSlots + 3;
@@ -76,4 +76,4 @@ void append_fields(const Gsa& s, frontends::FrameRecord& r) {
   put(r, "system_id", s.system_id);
 }
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

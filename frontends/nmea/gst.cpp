@@ -2,7 +2,7 @@
 #include "frontends/nmea/record_fields.hpp"
 #include "frontends/nmea/sentences.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 constexpr std::size_t kGstDataFields = 8;  // L1062, digest §10.1 fixed example
 }  // namespace
@@ -47,4 +47,4 @@ void append_fields(const Gst& s, frontends::FrameRecord& r) {
   put(r, "std_alt_m", s.std_alt_m);
 }
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

@@ -4,7 +4,7 @@
 #include "frontends/nmea/record_fields.hpp"
 #include "frontends/nmea/sentences.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 constexpr std::size_t kGsvHeaderFields = 3;  // NoMsg, MsgNo, NoSv
 constexpr std::size_t kGsvFieldsPerSat = 4;  // sv, elv, az, cn0
@@ -81,4 +81,4 @@ void append_fields(const Gsv& s, frontends::FrameRecord& r) {
   put(r, "signal_id", s.signal_id);
 }
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

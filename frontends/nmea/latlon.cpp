@@ -4,7 +4,7 @@
 
 #include "frontends/nmea/fields.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 
 constexpr double kMinutesPerDegree = 60.0;
@@ -62,4 +62,4 @@ void add_longitude(SentenceWriter& w, const LatLonField& lon) {
   add_angle(w, lon, kLonDegreeDigits, 'E', 'W');
 }
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

@@ -7,9 +7,9 @@
 #include <optional>
 #include <string_view>
 
-#include "frontends/nmea/sentence_writer.hpp"
+#include "frontends/nmea/writer.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 
 struct LatLonField {
   double deg = 0.0;        // signed degrees: + north / + east
@@ -25,4 +25,4 @@ std::optional<LatLonField> parse_longitude(std::string_view value, std::string_v
 void add_latitude(SentenceWriter& w, const LatLonField& lat);
 void add_longitude(SentenceWriter& w, const LatLonField& lon);
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

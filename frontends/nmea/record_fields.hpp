@@ -11,7 +11,7 @@
 #include "frontends/common/stream_decoder.hpp"
 #include "frontends/nmea/fields.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 
 inline void put(frontends::FrameRecord& r, std::string_view name, frontends::FieldValue v) {
   r.fields.emplace_back(std::string(name), std::move(v));
@@ -55,4 +55,4 @@ inline void put(frontends::FrameRecord& r, std::string_view name, const Count& v
   put(r, name, v.value);
 }
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

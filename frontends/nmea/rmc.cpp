@@ -2,7 +2,7 @@
 #include "frontends/nmea/record_fields.hpp"
 #include "frontends/nmea/sentences.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 constexpr std::size_t kRmcH30DataFields = 12;  // L1200
 constexpr std::size_t kRmcH51DataFields = 13;  // L980: adds navStatus
@@ -74,4 +74,4 @@ void append_fields(const Rmc& s, frontends::FrameRecord& r) {
   put(r, "nav_status", s.nav_status);
 }
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

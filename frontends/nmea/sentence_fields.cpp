@@ -2,7 +2,7 @@
 #include "frontends/nmea/record_fields.hpp"
 #include "frontends/nmea/sentences.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
 constexpr double kNsToS = 1e-9;
@@ -101,4 +101,4 @@ void put_latlon(frontends::FrameRecord& r, const std::optional<LatLonField>& lat
   if (lon) put(r, "lon_deg", lon->deg); else put_null(r, "lon_deg");
 }
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

@@ -16,11 +16,11 @@
 #include "frontends/common/stream_decoder.hpp"
 #include "frontends/nmea/fields.hpp"
 #include "frontends/nmea/latlon.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
 #include "frontends/nmea/talker.hpp"
 #include "frontends/nmea/utc_fields.hpp"
+#include "frontends/nmea/writer.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 
 inline constexpr std::size_t kTalkerChars = 2;
 inline constexpr std::size_t kSentenceTypeChars = 3;
@@ -184,4 +184,4 @@ void put_time(frontends::FrameRecord& r, const std::optional<TimeOfDay>& t);
 void put_latlon(frontends::FrameRecord& r, const std::optional<LatLonField>& lat,
                 const std::optional<LatLonField>& lon);
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

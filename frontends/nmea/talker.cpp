@@ -1,6 +1,6 @@
 #include "frontends/nmea/talker.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 
 // Number ranges shared by both dialects (L935, L1157).
@@ -71,4 +71,4 @@ std::uint32_t nmea_from_sat(const SatId& sat, Dialect dialect) {
   }
 }
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string_view>
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 
 enum class Dialect : std::uint8_t {
   kH51 = 0,  // NMEA 4.1 + BDS: GSA systemID, GSV signalID, RMC navStatus; zero-padded numbers
@@ -33,4 +33,4 @@ SatId sat_from_nmea(std::uint32_t number, Talker talker, Dialect dialect);
 // Inverse: the number to print for a satellite.
 std::uint32_t nmea_from_sat(const SatId& sat, Dialect dialect);
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

@@ -5,7 +5,7 @@
 #include "core/time/gps_time.hpp"
 #include "frontends/nmea/fields.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 
 constexpr std::size_t kHhmmssDigits = 6;
@@ -85,4 +85,4 @@ void add_date_ddmmyy(SentenceWriter& w, const Date& d) {
   w.append_uint(static_cast<std::uint64_t>(((d.year % 100) + 100) % 100), 2);
 }
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

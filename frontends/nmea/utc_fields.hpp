@@ -6,9 +6,9 @@
 #include <optional>
 #include <string_view>
 
-#include "frontends/nmea/sentence_writer.hpp"
+#include "frontends/nmea/writer.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 
 inline constexpr std::int64_t kNsPerDay = 86'400'000'000'000;
 
@@ -32,4 +32,4 @@ std::optional<Date> parse_date_ddmmyy(std::string_view field);
 void add_time_of_day(SentenceWriter& w, const TimeOfDay& t);
 void add_date_ddmmyy(SentenceWriter& w, const Date& d);
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

@@ -2,7 +2,7 @@
 #include "frontends/nmea/record_fields.hpp"
 #include "frontends/nmea/sentences.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 constexpr std::size_t kVtgDataFields = 9;  // L1012
 }  // namespace
@@ -56,4 +56,4 @@ void append_fields(const Vtg& s, frontends::FrameRecord& r) {
   put(r, "mode", s.mode);
 }
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

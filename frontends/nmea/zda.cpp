@@ -2,7 +2,7 @@
 #include "frontends/nmea/record_fields.hpp"
 #include "frontends/nmea/sentences.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 constexpr std::size_t kZdaDataFields = 6;  // L1037
 }  // namespace
@@ -42,4 +42,4 @@ void append_fields(const Zda& s, frontends::FrameRecord& r) {
   put(r, "zone_minutes", s.zone_minutes);
 }
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

@@ -5,10 +5,10 @@
 
 #include "core/time/gps_time.hpp"
 #include "frontends/nmea/latlon.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
 #include "frontends/nmea/utc_fields.hpp"
+#include "frontends/nmea/writer.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 
 constexpr std::int64_t kMsPerSecond = 1000;
@@ -201,4 +201,4 @@ std::vector<std::string> fusion_setup_commands(bool save) {
   return out;
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

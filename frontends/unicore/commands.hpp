@@ -19,7 +19,7 @@
 #include <string_view>
 #include <vector>
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 
 // "$NAME,p1,...,pn*HH\r\n" from raw parameter texts, with the rules above.
 std::string encode_command(std::string_view name, const std::vector<std::string>& params);
@@ -164,4 +164,4 @@ std::string encode_lsf_query(std::uint32_t system);   // L1392-L1402: 0 GPS, 1 B
 // a rate CFGPRT does not list, digest §11 item 8).
 std::vector<std::string> fusion_setup_commands(bool save = false);
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -1,9 +1,9 @@
 // CWOUT: interference detection (spec L1440-L1451).
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
+#include "frontends/nmea/writer.hpp"
 #include "frontends/unicore/messages.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 constexpr std::size_t kCwoutDataFields = 2;  // syntax L1444
 }  // namespace
@@ -28,4 +28,4 @@ void append_fields(const Cwout& m, frontends::FrameRecord& r) {
   nmea::put(r, "interference_ratio", m.ratio);
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -5,10 +5,10 @@
 
 #include "core/rotation/rotation.hpp"
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/unicore/measurement_mapping.hpp"
-#include "frontends/unicore/reply.hpp"
+#include "frontends/unicore/commands_reply.hpp"
+#include "frontends/unicore/to_core.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 
 constexpr std::string_view kProtocol = "unicore";
@@ -262,4 +262,4 @@ void UnicoreDecoder::on_unicore(const nmea::Frame& frame, std::string_view name,
   }
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -2,7 +2,7 @@
 // nmea::SentenceFramer, decodes every output of the spec (GYOACC, GYOACC-V, SNRSTAT, NAVPOS,
 // NAVVEL, NAVTIME, NAVACC, NAVATT, LSF, CWOUT, NOTICE, NMEA GGA/GLL/GSA/GSV/RMC/VTG/ZDA/GST in
 // both dialects, command replies and configuration reports) and emits core measurements as
-// described in measurement_mapping.hpp, on GPS time through UtcClock.
+// described in to_core.hpp, on GPS time through UtcClock.
 //
 // Counters: `frames` counts every checksum-valid (or checksum-less) sentence; of those,
 // `unknown_frames` are names this decoder does not know and `decode_errors` are known names whose
@@ -15,12 +15,12 @@
 #include <string_view>
 
 #include "frontends/common/stream_decoder.hpp"
-#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/framer.hpp"
 #include "frontends/nmea/sentences.hpp"
 #include "frontends/unicore/messages.hpp"
 #include "frontends/unicore/utc_clock.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 
 struct DecoderOptions {
   nmea::FramerOptions framer;
@@ -94,4 +94,4 @@ class UnicoreDecoder final : public frontends::StreamDecoder {
   std::uint32_t cumulative_pulses_ = 0;  // wraps at 2^32 (WheelTicks::rollover = 0)
 };
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

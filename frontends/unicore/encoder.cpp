@@ -6,10 +6,10 @@
 #include "core/rotation/rotation.hpp"
 #include "core/time/gps_time.hpp"
 #include "frontends/nmea/sentences.hpp"
-#include "frontends/unicore/measurement_mapping.hpp"
 #include "frontends/unicore/messages.hpp"
+#include "frontends/unicore/to_core.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 
 using time::kNsPerSecond;
@@ -287,4 +287,4 @@ bool UnicoreEncoder::encode_solution(const NavSolution& s, std::vector<std::uint
   return true;
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

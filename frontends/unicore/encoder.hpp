@@ -1,5 +1,5 @@
 // MeasurementEncoder writing core measurements the way a UM220-INS emits them (for `navfuse sim`
-// and round-trip tests); the inverse of measurement_mapping.hpp:
+// and round-trip tests); the inverse of to_core.hpp:
 //   ImuSample (sensor frame)  -> GYOACC;  ImuSample (vehicle frame) -> GYOACC-V (RFU axes).
 //                                Increments are divided by dt_s into rates.
 //   WheelTicks / VehicleSpeed -> buffered (true, no bytes): their pulses ride in the next GYOACC
@@ -21,7 +21,7 @@
 #include "frontends/common/stream_decoder.hpp"
 #include "frontends/nmea/talker.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 
 struct EncoderOptions {
   nmea::Dialect dialect = nmea::Dialect::kH51;  // CFGNMEA nmeaVer of the simulated device
@@ -62,4 +62,4 @@ class UnicoreEncoder final : public frontends::MeasurementEncoder {
   std::optional<std::uint32_t> last_status_;
 };
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -1,12 +1,15 @@
 #include "frontends/unicore/frontend.hpp"
 
+#include "core/rotation/rotation.hpp"
 #include "frontends/nmea/fields.hpp"
-#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/framer.hpp"
 #include "frontends/nmea/sentences.hpp"
+#include "frontends/unicore/commands.hpp"
+#include "frontends/unicore/commands_reply.hpp"
 #include "frontends/unicore/decoder.hpp"
 #include "frontends/unicore/encoder.hpp"
 
-namespace navfuse::frontends {
+namespace navfuse::frontends::unicore {
 namespace {
 
 // Names that identify this device's stream. Plain NMEA names count too (the UM220 outputs them
@@ -39,16 +42,32 @@ std::size_t probe(std::span<const std::uint8_t> head) {
   return count;
 }
 
-std::unique_ptr<StreamDecoder> make_decoder() { return std::make_unique<unicore::UnicoreDecoder>(); }
-std::unique_ptr<MeasurementEncoder> make_encoder() { return std::make_unique<unicore::UnicoreEncoder>(); }
+std::unique_ptr<StreamDecoder> make_decoder() { return std::make_unique<UnicoreDecoder>(); }
+std::unique_ptr<MeasurementEncoder> make_encoder() { return std::make_unique<UnicoreEncoder>(); }
+std::vector<DeviceCommand> setup_commands() { return commands_from_sentences(fusion_setup_commands()); }
 
 }  // namespace
 
-const FrontendInfo& unicore_frontend() {
-  static const FrontendInfo info{"unicore",
-                                 "Unicore UM220-INS ASCII protocol + NMEA (GYOACC, NAVPOS/VEL/ATT, GGA...)",
-                                 &probe, &make_decoder, &make_encoder};
+const FrontendInfo& frontend() {
+  static const FrontendInfo info{
+      .format = "unicore",
+      .description = "Unicore UM220-INS ASCII protocol + NMEA (GYOACC, NAVPOS/VEL/ATT, GGA...)",
+      .probe = &probe,
+      .make_decoder = &make_decoder,
+      .make_encoder = &make_encoder,
+      .default_profile = config::DeviceProfile::kUm220,
+      .setup_commands = &setup_commands,
+      .find_refusal = &find_refusal,
+      // UM220-INS, automotive MEMS, 5 Hz solution: typical of the class, not datasheet guarantees.
+      .device_errors = {.horizontal_std_m = 1.5,
+                        .vertical_std_m = 3.0,
+                        .velocity_std_mps = 0.1,
+                        .roll_pitch_std_rad = 0.3 * rot::kDegToRad,
+                        .heading_std_rad = 1.0 * rot::kDegToRad,
+                        .outage_accel_std_mps2 = 0.03,
+                        .rate_hz = 5.0},
+  };
   return info;
 }
 
-}  // namespace navfuse::frontends
+}  // namespace navfuse::frontends::unicore

@@ -3,11 +3,11 @@
 #include <string>
 
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
 #include "frontends/nmea/sentences.hpp"
+#include "frontends/nmea/writer.hpp"
 #include "frontends/unicore/messages.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 constexpr std::size_t kGyoaccDataFields = 14;  // syntax L734
 constexpr std::string_view kAxisNames[3] = {"x", "y", "z"};
@@ -74,4 +74,4 @@ void append_fields(const Gyoacc& m, frontends::FrameRecord& r) {
   put(r, "reverse", m.reverse);
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

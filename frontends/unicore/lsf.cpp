@@ -1,9 +1,9 @@
 // LSF: leap-second forecast, output form (spec L1392-L1438; digest §4.10).
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
+#include "frontends/nmea/writer.hpp"
 #include "frontends/unicore/messages.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 constexpr std::size_t kLsfDataFields = 10;  // syntax L1406
 }  // namespace
@@ -49,4 +49,4 @@ void append_fields(const Lsf& m, frontends::FrameRecord& r) {
   put(r, "utc_a1", m.a1);  // units of 2^-50 s/s
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -1,7 +1,7 @@
 // Required-field readers shared by the UM220 message files.
 #include "frontends/unicore/messages.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 
 bool read(std::string_view field, Real& v) {
   const auto r = nmea::parse_real(field);
@@ -21,4 +21,4 @@ bool read(std::string_view field, std::int32_t& v) {
   return r.has_value();
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

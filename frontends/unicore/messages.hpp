@@ -16,7 +16,7 @@
 #include "frontends/nmea/fields.hpp"
 #include "frontends/nmea/utc_fields.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 
 using nmea::Real;
 
@@ -167,4 +167,4 @@ bool read(std::string_view field, Real& v);
 bool read(std::string_view field, std::uint32_t& v);
 bool read(std::string_view field, std::int32_t& v);
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -1,10 +1,10 @@
 // NAVACC: horizontal position / velocity / course accuracy (spec L1348-L1364; digest §4.8).
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
 #include "frontends/nmea/sentences.hpp"
+#include "frontends/nmea/writer.hpp"
 #include "frontends/unicore/messages.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 constexpr std::size_t kNavaccDataFields = 5;  // syntax L1352
 constexpr double kMilli = 1e-3;
@@ -44,4 +44,4 @@ void append_fields(const Navacc& m, frontends::FrameRecord& r) {
   put(r, "course_std_deg", m.course_acc_mdeg * kMilli);
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

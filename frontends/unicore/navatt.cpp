@@ -1,10 +1,10 @@
 // NAVATT: attitude and its standard deviations (spec L1366-L1388; digest §4.9).
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
 #include "frontends/nmea/sentences.hpp"
+#include "frontends/nmea/writer.hpp"
 #include "frontends/unicore/messages.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 constexpr std::size_t kNavattDataFields = 8;  // syntax L1370
 }  // namespace
@@ -46,4 +46,4 @@ void append_fields(const Navatt& m, frontends::FrameRecord& r) {
   put(r, "yaw_std_deg", m.yaw_std_e5deg * kNavattDegPerUnit);
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -2,10 +2,10 @@
 #include <cmath>
 
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
+#include "frontends/nmea/writer.hpp"
 #include "frontends/unicore/messages.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 constexpr std::size_t kNavposDataFields = 9;  // syntax L1281
 }  // namespace
@@ -48,4 +48,4 @@ void append_fields(const Navpos& m, frontends::FrameRecord& r) {
   put(r, "height_m", m.height_m);
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

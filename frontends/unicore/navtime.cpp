@@ -1,9 +1,9 @@
 // NAVTIME: GPS, BDS, Galileo and GLONASS time (spec L1320-L1346; digest §4.7, §11 item 24).
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
+#include "frontends/nmea/writer.hpp"
 #include "frontends/unicore/messages.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 // The example and the parameter table (L1332-L1345) have 13 fields; the syntax line L1324 is
 // garbled (GPST twice, GPSQ missing): erratum applied per digest §11 item 24.
@@ -59,4 +59,4 @@ void append_fields(const Navtime& m, frontends::FrameRecord& r) {
   put(r, "glo_quality", m.glo_quality);
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

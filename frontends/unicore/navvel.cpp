@@ -1,9 +1,9 @@
 // NAVVEL: GNSS velocity in ECEF (spec L1300-L1318; digest §4.6).
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
+#include "frontends/nmea/writer.hpp"
 #include "frontends/unicore/messages.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 constexpr std::size_t kNavvelDataFields = 7;  // syntax L1304
 }  // namespace
@@ -41,4 +41,4 @@ void append_fields(const Navvel& m, frontends::FrameRecord& r) {
   put(r, "clock_drift_mps", m.clock_drift_mps);
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -3,10 +3,10 @@
 #include <string>
 
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
+#include "frontends/nmea/writer.hpp"
 #include "frontends/unicore/messages.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 
 std::optional<Notice> decode_notice(const nmea::Fields& f) {
   if (f.data_count() > kMaxNoticeFields) return std::nullopt;
@@ -27,4 +27,4 @@ void append_fields(const Notice& m, frontends::FrameRecord& r) {
   for (std::size_t i = 0; i < m.count; ++i) nmea::put(r, "field" + std::to_string(i + 1), m.fields[i]);
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

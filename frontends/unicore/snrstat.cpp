@@ -1,9 +1,9 @@
 // SNRSTAT: INS initialisation, odometer, installation and map-matching state (spec L805-L821).
 #include "frontends/nmea/record_fields.hpp"
-#include "frontends/nmea/sentence_writer.hpp"
+#include "frontends/nmea/writer.hpp"
 #include "frontends/unicore/messages.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 constexpr std::size_t kSnrstatFieldsBeforeR26 = 3;  // mapstat added in R2.6 (L31)
 constexpr std::size_t kSnrstatFields = 4;           // syntax L808
@@ -41,4 +41,4 @@ void append_fields(const Snrstat& m, frontends::FrameRecord& r) {
   nmea::put(r, "map_status", m.map_status);
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

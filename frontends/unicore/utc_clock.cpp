@@ -4,7 +4,7 @@
 
 #include "core/time/gps_time.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 
 using time::kNsPerSecond;
@@ -130,4 +130,4 @@ std::optional<std::int64_t> UtcClock::from_ms_of_week(std::uint32_t ms, std::uin
   return gps_ns;
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -22,7 +22,7 @@
 #include "frontends/nmea/utc_fields.hpp"
 #include "frontends/unicore/messages.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 
 class UtcClock {
  public:
@@ -67,4 +67,4 @@ class UtcClock {
   bool cache_valid_ = false;
 };
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

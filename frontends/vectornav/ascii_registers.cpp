@@ -2,7 +2,7 @@
 
 #include <array>
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 
 using N = std::string_view;
@@ -124,4 +124,4 @@ const RegisterLayout* find_async_output(std::string_view header) {
   return nullptr;
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

@@ -8,7 +8,7 @@
 #include <span>
 #include <string_view>
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 // Register ids used by name elsewhere (register index, ICD p.178, L5418-5457).
 namespace reg {
@@ -35,4 +35,4 @@ struct RegisterLayout {
 const RegisterLayout* find_register(int id);
 const RegisterLayout* find_async_output(std::string_view header);
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

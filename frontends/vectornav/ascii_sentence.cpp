@@ -4,7 +4,7 @@
 
 #include "core/bytes/checks.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 
 constexpr std::size_t kXorDigits = 2;
@@ -115,4 +115,4 @@ std::string make_sentence(std::string_view body, AsciiChecksum kind) {
   return s;
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

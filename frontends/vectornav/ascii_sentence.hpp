@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 enum class AsciiChecksum : std::uint8_t {
   kXor8 = 1,   // Reg 30 value 1 (default)
@@ -53,4 +53,4 @@ bool parse_sentence(std::string_view body, bool strip_appends, AsciiSentence& ou
 // "$" + body + "*" + checksum + "\r\n" (uppercase hex, as in every ICD example).
 std::string make_sentence(std::string_view body, AsciiChecksum kind = AsciiChecksum::kXor8);
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

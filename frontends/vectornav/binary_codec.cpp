@@ -7,7 +7,7 @@
 #include "frontends/vectornav/message_visit.hpp"
 #include "frontends/vectornav/split_packet.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 bool decode_binary_body(std::span<const std::uint8_t> body, BinaryMessage& msg) {
   if (parse_header(body, msg.header) != ParseStatus::kOk) return false;
@@ -56,4 +56,4 @@ void describe_binary_message(BinaryMessage& msg, FrameRecord& record) {
   visit_message(io, msg);
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

@@ -10,7 +10,7 @@
 #include "frontends/common/stream_decoder.hpp"
 #include "frontends/vectornav/binary_message.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 // Decodes a message body into `msg` (fields not in the header keep stale values; check
 // msg.has()). False when the header is invalid or the payload length disagrees with it.
@@ -24,4 +24,4 @@ bool append_binary_message(BinaryMessage& msg, std::vector<std::uint8_t>& out, s
 // Lists every field of `msg` (names carry units and the group, e.g. "ins.lat_deg").
 void describe_binary_message(BinaryMessage& msg, FrameRecord& record);
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

@@ -2,7 +2,7 @@
 
 #include <bit>
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 
 constexpr unsigned kBitsPerGroupByte = 8;
@@ -102,4 +102,4 @@ void append_header(const BinaryHeader& header, std::vector<std::uint8_t>& out) {
   }
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

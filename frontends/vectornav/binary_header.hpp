@@ -11,7 +11,7 @@
 
 #include "frontends/vectornav/binary_layout.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 struct BinaryHeader {
   std::uint32_t groups = 0;                        // raw group bits, extension bits cleared
@@ -43,4 +43,4 @@ ParseStatus measure_payload(const BinaryHeader& header, std::span<const std::uin
 // minimum number of group bytes are used"; extension bits set only where needed).
 void append_header(const BinaryHeader& header, std::vector<std::uint8_t>& out);
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

@@ -1,6 +1,6 @@
 #include "frontends/vectornav/binary_layout.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 
 constexpr std::uint8_t V = kVariableSize;
@@ -41,4 +41,4 @@ std::size_t slot_of_group_bit(unsigned bit) {
   return kGroupCount;
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

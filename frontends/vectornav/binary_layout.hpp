@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <span>
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 // Framing constants (ICD §2.1.3 L692-699, Appendix B.1).
 inline constexpr std::uint8_t kSyncBinary = 0xFA;   // L696
@@ -108,4 +108,4 @@ std::uint32_t known_type_mask(std::size_t slot);
 // Slot of a raw group bit, or kGroupCount if this firmware has no such group.
 std::size_t slot_of_group_bit(unsigned bit);
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

@@ -1,6 +1,6 @@
 // A decoded VectorNav binary message: which types it carries (the header) and their values in
 // the device's own units (degrees, Gauss, kPa, ns), one struct per group (ICD §2.2-2.9, digest §5).
-// Conversion to SI happens only when mapping to core measurements (measurement_mapper.hpp).
+// Conversion to SI happens only when mapping to core measurements (to_core.hpp).
 //
 // Common-group types are copies of other groups' types with identical layouts (ICD §2.2,
 // L761-784), so they are stored in the referenced group's fields; the header says which group
@@ -13,7 +13,7 @@
 
 #include "frontends/vectornav/binary_header.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 using Vec3f = std::array<float, 3>;
 using Vec3d = std::array<double, 3>;
@@ -146,4 +146,4 @@ struct BinaryMessage {
   }
 };
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

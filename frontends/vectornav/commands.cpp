@@ -4,11 +4,12 @@
 #include <cstdio>
 
 #include "core/bytes/checks.hpp"
+#include "frontends/common/device_command.hpp"
 #include "frontends/vectornav/ascii_registers.hpp"
 #include "frontends/vectornav/binary_layout.hpp"
 #include "frontends/vectornav/float_cast.hpp"
 
-namespace navfuse::frontends::vn::cmd {
+namespace navfuse::frontends::vectornav::cmd {
 namespace {
 
 constexpr std::string_view kRead = "VNRRG";
@@ -270,4 +271,6 @@ std::optional<CompassBaseline> parse_compass_baseline(const Reply& r) {
   return CompassBaseline{{(*v)[0], (*v)[1], (*v)[2]}, {(*v)[3], (*v)[4], (*v)[5]}};
 }
 
-}  // namespace navfuse::frontends::vn::cmd
+std::string find_refusal(std::span<const std::uint8_t> reply_bytes) { return line_starting_with(reply_bytes, "$VNERR"); }
+
+}  // namespace navfuse::frontends::vectornav::cmd

@@ -18,7 +18,7 @@
 #include "frontends/vectornav/ascii_sentence.hpp"
 #include "frontends/vectornav/binary_header.hpp"
 
-namespace navfuse::frontends::vn::cmd {
+namespace navfuse::frontends::vectornav::cmd {
 
 std::string read_register(int id, AsciiChecksum checksum = AsciiChecksum::kXor8);
 // `values` are printed verbatim, comma separated, after the register id.
@@ -126,4 +126,8 @@ struct CompassBaseline {
 };
 std::optional<CompassBaseline> parse_compass_baseline(const Reply& reply);
 
-}  // namespace navfuse::frontends::vn::cmd
+// Looks through the bytes received after a command for the device's error reply; returns the
+// first "$VNERR,..." line (ICD §1.4, Table 1.7), "" when there is none.
+std::string find_refusal(std::span<const std::uint8_t> reply_bytes);
+
+}  // namespace navfuse::frontends::vectornav::cmd

@@ -3,7 +3,7 @@
 
 #include "core/measurements/measurements.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 struct DecoderOptions {
   // 1-sigma given to the GNSS-compass heading of Reg 98, which states none. Default: the ICD's
@@ -17,4 +17,4 @@ struct DecoderOptions {
   SensorFrame imu_frame = SensorFrame::kSensor;
 };
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

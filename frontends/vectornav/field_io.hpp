@@ -15,7 +15,7 @@
 #include "core/bytes/byte_writer.hpp"
 #include "frontends/common/stream_decoder.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 using Names3 = std::array<std::string_view, 3>;
 
@@ -95,4 +95,4 @@ class FieldDescriber {
   std::string element_;
 };
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <limits>
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 inline float to_f32(double v) {
   constexpr double kMax = std::numeric_limits<float>::max();
   return static_cast<float>(std::clamp(v, -kMax, kMax));
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

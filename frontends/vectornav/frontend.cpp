@@ -1,14 +1,16 @@
 #include "frontends/vectornav/frontend.hpp"
 
-#include "frontends/vectornav/port_framer.hpp"
-#include "frontends/vectornav/vn_measurement_encoder.hpp"
-#include "frontends/vectornav/vn_stream_decoder.hpp"
+#include "core/rotation/rotation.hpp"
+#include "frontends/vectornav/commands.hpp"
+#include "frontends/vectornav/decoder.hpp"
+#include "frontends/vectornav/encoder.hpp"
+#include "frontends/vectornav/framer.hpp"
 
-namespace navfuse::frontends {
-namespace vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 constexpr std::string_view kAsciiVectorNav = "$VN";
-}
+std::vector<DeviceCommand> setup_commands() { return commands_from_sentences(cmd::fusion_setup_commands({})); }
+}  // namespace
 
 std::size_t probe_vectornav(std::span<const std::uint8_t> head) {
   PortFramer framer;
@@ -25,17 +27,23 @@ std::size_t probe_vectornav(std::span<const std::uint8_t> head) {
   return count;
 }
 
-}  // namespace vn
-
-const FrontendInfo& vectornav_frontend() {
+const FrontendInfo& frontend() {
   static const FrontendInfo info{
-      "vn",
-      "VectorNav VN-300 binary (0xFA/0xFB) and ASCII ($VN) output",
-      &vn::probe_vectornav,
-      []() -> std::unique_ptr<StreamDecoder> { return std::make_unique<vn::VnStreamDecoder>(); },
-      []() -> std::unique_ptr<MeasurementEncoder> { return std::make_unique<vn::VnMeasurementEncoder>(); },
+      .format = "vn",
+      .description = "VectorNav VN-300 binary (0xFA/0xFB) and ASCII ($VN) output",
+      .probe = &probe_vectornav,
+      .make_decoder = []() -> std::unique_ptr<StreamDecoder> { return std::make_unique<VnStreamDecoder>(); },
+      .make_encoder = []() -> std::unique_ptr<MeasurementEncoder> { return std::make_unique<VnMeasurementEncoder>(); },
+      .default_profile = config::DeviceProfile::kVn300,
+      .setup_commands = &setup_commands,
+      .find_refusal = &cmd::find_refusal,
+      // VN-300, dual antenna, industrial MEMS, INS output with the IMU: typical of the class, not
+      // datasheet guarantees.
+      .device_errors = {.roll_pitch_std_rad = 0.05 * rot::kDegToRad,
+                        .heading_std_rad = 0.2 * rot::kDegToRad,
+                        .rate_is_imu_rate = true},
   };
   return info;
 }
 
-}  // namespace navfuse::frontends
+}  // namespace navfuse::frontends::vectornav

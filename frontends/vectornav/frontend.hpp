@@ -6,17 +6,15 @@
 #include <cstdint>
 #include <span>
 
-#include "frontends/common/stream_decoder.hpp"
+#include "frontends/common/frontend_info.hpp"
 
-namespace navfuse::frontends {
+namespace navfuse::frontends::vectornav {
 
 // format "vn"; probe() counts checksum-valid VectorNav frames (binary 0xFA/0xFB packets and
 // $VN... sentences; other ASCII such as NMEA is not counted) in the head of a stream;
-// make_decoder() returns a vn::VnStreamDecoder, make_encoder() a vn::VnMeasurementEncoder.
-const FrontendInfo& vectornav_frontend();
+// make_decoder() returns a VnStreamDecoder, make_encoder() a VnMeasurementEncoder.
+const FrontendInfo& frontend();
 
-namespace vn {
 std::size_t probe_vectornav(std::span<const std::uint8_t> head);
-}
 
-}  // namespace navfuse::frontends
+}  // namespace navfuse::frontends::vectornav

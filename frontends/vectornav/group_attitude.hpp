@@ -4,7 +4,7 @@
 #include "frontends/vectornav/binary_message.hpp"
 #include "frontends/vectornav/field_io.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 namespace attitude_names {
 inline constexpr Names3 kYpr = {"yaw_deg", "pitch_deg", "roll_deg"};
@@ -36,4 +36,4 @@ void visit_attitude_type(unsigned bit, Io& io, AttitudeFields& f) {
   }
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

@@ -9,7 +9,7 @@
 #include "frontends/vectornav/group_ins.hpp"
 #include "frontends/vectornav/group_time.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 template <class Io>
 void visit_common_type(unsigned bit, Io& io, BinaryMessage& m) {
@@ -43,4 +43,4 @@ void visit_common_type(unsigned bit, Io& io, BinaryMessage& m) {
   }
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

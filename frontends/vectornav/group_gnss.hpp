@@ -6,7 +6,7 @@
 #include "frontends/vectornav/field_io.hpp"
 #include "frontends/vectornav/group_time.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 namespace gnss_names {
 inline constexpr Names3 kPosLla = {"lat_deg", "lon_deg", "height_m"};
@@ -109,4 +109,4 @@ inline constexpr std::uint8_t kNoFix = 0, kTimeOnly = 1, kFix2D = 2, kFix3D = 3,
 inline constexpr std::uint8_t kRtkFloat = 7, kRtkFix = 8;
 }  // namespace vn_fix
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

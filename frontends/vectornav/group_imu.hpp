@@ -4,7 +4,7 @@
 #include "frontends/vectornav/binary_message.hpp"
 #include "frontends/vectornav/field_io.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 namespace imu_names {
 inline constexpr Names3 kUncompMag = {"uncomp_mag_x_gauss", "uncomp_mag_y_gauss", "uncomp_mag_z_gauss"};
@@ -54,4 +54,4 @@ inline constexpr std::uint16_t kImuStateFailed = 3;
 inline constexpr unsigned kSensSatAccelShift = 3;
 inline constexpr unsigned kSensSatGyroShift = 6;
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

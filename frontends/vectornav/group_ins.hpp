@@ -5,7 +5,7 @@
 #include "frontends/vectornav/field_io.hpp"
 #include "frontends/vectornav/ins_status.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 namespace ins_names {
 inline constexpr Names3 kPosLla = {"lat_deg", "lon_deg", "height_m"};
@@ -51,4 +51,4 @@ void visit_ins_type(unsigned bit, Io& io, InsFields& f) {
   }
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

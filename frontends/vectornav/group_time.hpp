@@ -5,7 +5,7 @@
 #include "frontends/vectornav/binary_message.hpp"
 #include "frontends/vectornav/field_io.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 // Errata A8 (digest §10; ICD L873 vs L1172): FracSec is uint16 in the Time group and int16
 // ("typically positive, but may be negative") in the GNSS groups.
@@ -47,4 +47,4 @@ void visit_time_type(unsigned bit, Io& io, TimeFields& f) {
   }
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

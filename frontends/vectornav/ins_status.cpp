@@ -1,6 +1,6 @@
 #include "frontends/vectornav/ins_status.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 constexpr std::uint16_t kModeMask = 0x0003;
 constexpr std::uint16_t kGnssFixBit = 1u << 2;
@@ -81,4 +81,4 @@ std::uint32_t status_flags_of(const InsStatus& s) {
   return f;
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

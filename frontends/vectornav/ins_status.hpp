@@ -6,7 +6,7 @@
 
 #include "core/measurements/measurements.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 enum class InsMode : std::uint8_t { kNotTracking = 0, kAligning = 1, kTracking = 2, kGnssLost = 3 };
 enum class CompassFix : std::uint8_t { kNoFix = 0, kUndefined = 1, kFix = 2, kFixAiding = 3 };
@@ -44,4 +44,4 @@ InsStatus ins_status_of(const NavSolution& solution);
 // NavSolution::kStatus* flags implied by a status.
 std::uint32_t status_flags_of(const InsStatus& status);
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

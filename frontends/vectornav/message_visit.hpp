@@ -12,7 +12,7 @@
 #include "frontends/vectornav/group_ins.hpp"
 #include "frontends/vectornav/group_time.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 // FrameRecord field-name prefixes per group slot ("ins.lat_deg", "gnss2.fix", ...).
 inline constexpr std::array<std::string_view, kGroupCount> kGroupPrefixes = {
@@ -41,4 +41,4 @@ void visit_message(Io& io, BinaryMessage& m) {
   }
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

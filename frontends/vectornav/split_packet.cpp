@@ -2,7 +2,7 @@
 
 #include "core/bytes/checks.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 constexpr unsigned kNibbleBits = 4;
 constexpr std::uint8_t kNibbleMask = 0x0F;
@@ -88,4 +88,4 @@ bool append_split_packets(std::span<const std::uint8_t> body, std::uint8_t messa
   return true;
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

@@ -10,7 +10,7 @@
 
 #include "frontends/vectornav/binary_header.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 // Table B.1: MsgType, MessageID, PacketCount (high nibble total, low nibble index), PayloadLength.
 inline constexpr std::size_t kSplitHeaderBytes = 5;
@@ -59,4 +59,4 @@ class SplitReassembler {
 bool append_split_packets(std::span<const std::uint8_t> body, std::uint8_t message_id,
                           std::vector<std::uint8_t>& out);
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

@@ -1,6 +1,6 @@
 #include "frontends/vectornav/stream_clock.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 Stamp StreamClock::resolve(std::optional<std::int64_t> gps_ns, std::optional<std::int64_t> startup_ns) {
   if (gps_ns) {
@@ -16,4 +16,4 @@ Stamp StreamClock::resolve(std::optional<std::int64_t> gps_ns, std::optional<std
   return latest_;
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

@@ -14,7 +14,7 @@
 #include "core/time/clock_model.hpp"
 #include "core/time/gps_time.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 struct Stamp {
   std::int64_t time_ns = 0;
@@ -41,4 +41,4 @@ class StreamClock {
   Stamp latest_;
 };
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

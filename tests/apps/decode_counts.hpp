@@ -8,7 +8,7 @@
 #include <map>
 #include <string>
 
-#include "frontends/common/stream_decoder.hpp"
+#include "frontends/common/frontend_info.hpp"
 #include "test_files.hpp"
 
 namespace navfuse::apps::testing {

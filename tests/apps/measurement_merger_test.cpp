@@ -22,7 +22,7 @@ constexpr std::int64_t kT0 = 1'400'000'000'000'000'000LL;
 constexpr std::int64_t kMs = 1'000'000;
 
 void write_log(const std::filesystem::path& path, const std::vector<Measurement>& ms) {
-  auto enc = frontends::fusionengine_frontend().make_encoder();
+  auto enc = frontends::fusionengine::frontend().make_encoder();
   std::vector<std::uint8_t> bytes;
   for (const auto& m : ms) ASSERT_TRUE(enc->encode(m, bytes));
   std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
@@ -61,7 +61,7 @@ Logs make_logs(const std::filesystem::path& dir) {
 }
 
 std::vector<InputSpec> specs(const Logs& logs) {
-  const auto* fe = &frontends::fusionengine_frontend();
+  const auto* fe = &frontends::fusionengine::frontend();
   return {{logs.imu.string(), fe, false}, {logs.speed.string(), fe, false}};
 }
 

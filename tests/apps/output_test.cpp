@@ -119,8 +119,8 @@ struct FeFrameSeen {
 
 std::vector<FeFrameSeen> fe_frames(const std::vector<std::uint8_t>& bytes) {
   std::vector<FeFrameSeen> seen;
-  fe::Framer framer;
-  framer.feed(bytes, [&](const fe::Frame& f) { seen.push_back({f.header.message_type, f.header.sequence}); });
+  frontends::fusionengine::Framer framer;
+  framer.feed(bytes, [&](const frontends::fusionengine::Frame& f) { seen.push_back({f.header.message_type, f.header.sequence}); });
   EXPECT_EQ(framer.buffered_bytes(), 0u);
   return seen;
 }
@@ -161,11 +161,11 @@ TEST(FeEpochEncoder, NoImuOutputBeforeTheAttitudeIsKnown) {
 
 TEST(FeEpochEncoder, RatesSetByAClientApply) {
   FeEpochEncoder encoder;
-  ASSERT_TRUE(encoder.rates().set(kImuOutput, fe::MessageRate::kOff));
-  ASSERT_TRUE(encoder.rates().set(kPoseAux, fe::MessageRate::kOff));
-  ASSERT_TRUE(encoder.rates().set(kGnssInfo, fe::MessageRate::kOnChange));
-  ASSERT_TRUE(encoder.rates().set(kPose, fe::MessageRate::k100Ms));
-  EXPECT_FALSE(encoder.rates().set(12345, fe::MessageRate::kOff)) << "not a message navfuse streams";
+  ASSERT_TRUE(encoder.rates().set(kImuOutput, frontends::fusionengine::MessageRate::kOff));
+  ASSERT_TRUE(encoder.rates().set(kPoseAux, frontends::fusionengine::MessageRate::kOff));
+  ASSERT_TRUE(encoder.rates().set(kGnssInfo, frontends::fusionengine::MessageRate::kOnChange));
+  ASSERT_TRUE(encoder.rates().set(kPose, frontends::fusionengine::MessageRate::k100Ms));
+  EXPECT_FALSE(encoder.rates().set(12345, frontends::fusionengine::MessageRate::kOff)) << "not a message navfuse streams";
   std::vector<std::uint8_t> out;
   // 200 Hz epochs over 0.2 s, none a pose epoch by output.rate_hz; one fix fused at 50 ms.
   for (int k = 0; k < 40; ++k) {

@@ -22,7 +22,7 @@ class CountingSink final : public frontends::DecodeSink {
 std::vector<std::uint8_t> make_stream(double corrupt_fraction) {
   constexpr std::int64_t kT0 = 1'400'000'000'000'000'000;
   constexpr int kImuSamples = 40'000;  // ~5 MB
-  fe::FusionEngineWriter writer;
+  frontends::fusionengine::FusionEngineWriter writer;
   std::vector<std::uint8_t> out;
   std::mt19937_64 rng(42);
   std::normal_distribution<double> noise(0.0, 0.01);
@@ -33,8 +33,8 @@ std::vector<std::uint8_t> make_stream(double corrupt_fraction) {
     imu.frame = SensorFrame::kVehicle;
     imu.gyro = {noise(rng), noise(rng), noise(rng)};
     imu.accel = {noise(rng), noise(rng), -9.81 + noise(rng)};
-    fe::ImuOutputMessage m;
-    fe::imu_output_from(imu, m);
+    frontends::fusionengine::ImuOutputMessage m;
+    frontends::fusionengine::imu_output_from(imu, m);
     writer.append(m, out);
     if (i % 10 == 0) {
       NavSolution s;
@@ -50,7 +50,7 @@ std::vector<std::uint8_t> make_stream(double corrupt_fraction) {
       s.vel_ned_mps = {10.0, 1.0, 0.0};
       s.q_nb = rot::quat_from_rpy({0.01, 0.02, 0.1 * i});
       s.pos_std_ned_m = {0.02, 0.02, 0.05};
-      writer.append(fe::pose_from(s), out);
+      writer.append(frontends::fusionengine::pose_from(s), out);
     }
   }
   const auto n_corrupt = static_cast<std::size_t>(corrupt_fraction * static_cast<double>(out.size()));
@@ -64,7 +64,7 @@ void BM_FeDecodeCorrupted(benchmark::State& state) {
   const std::vector<std::uint8_t> stream = make_stream(0.01);
   std::uint64_t frames = 0, bad = 0, measurements = 0;
   for (auto _ : state) {
-    fe::FusionEngineDecoder decoder;
+    frontends::fusionengine::FusionEngineDecoder decoder;
     CountingSink sink;
     decoder.feed(stream, sink);
     decoder.finish(sink);
@@ -83,7 +83,7 @@ BENCHMARK(BM_FeDecodeCorrupted)->Unit(benchmark::kMillisecond);
 void BM_FeDecodeClean(benchmark::State& state) {
   const std::vector<std::uint8_t> stream = make_stream(0.0);
   for (auto _ : state) {
-    fe::FusionEngineDecoder decoder;
+    frontends::fusionengine::FusionEngineDecoder decoder;
     CountingSink sink;
     decoder.feed(stream, sink);
     decoder.finish(sink);

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/time/gps_time.hpp"
-#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/framer.hpp"
 #include "frontends/unicore/decoder.hpp"
 #include "frontends/unicore/encoder.hpp"
 
@@ -34,7 +34,7 @@ const char* const kOneHertzExamples[] = {
 };
 
 std::vector<std::uint8_t> make_stream() {
-  unicore::UnicoreEncoder enc;
+  frontends::unicore::UnicoreEncoder enc;
   std::vector<std::uint8_t> out;
   std::mt19937_64 rng(2024);
   std::normal_distribution<double> noise(0.0, 0.01);
@@ -103,7 +103,7 @@ void BM_UnicoreDecode(benchmark::State& state) {
   const auto& s = stream();
   std::size_t measurements = 0;
   for (auto _ : state) {
-    unicore::UnicoreDecoder dec;
+    frontends::unicore::UnicoreDecoder dec;
     CountingSink sink;
     for (std::size_t at = 0; at < s.size(); at += kChunkBytes) {
       dec.feed(std::span<const std::uint8_t>(s).subspan(at, std::min(kChunkBytes, s.size() - at)), sink);
@@ -120,11 +120,11 @@ BENCHMARK(BM_UnicoreDecode)->Unit(benchmark::kMillisecond);
 void BM_UnicoreFramingOnly(benchmark::State& state) {
   const auto& s = stream();
   for (auto _ : state) {
-    nmea::SentenceFramer framer;
+    frontends::nmea::SentenceFramer framer;
     std::size_t frames = 0;
     for (std::size_t at = 0; at < s.size(); at += kChunkBytes) {
       framer.feed(std::span<const std::uint8_t>(s).subspan(at, std::min(kChunkBytes, s.size() - at)),
-                  [&](const nmea::Frame&) { ++frames; });
+                  [&](const frontends::nmea::Frame&) { ++frames; });
     }
     benchmark::DoNotOptimize(frames);
   }

@@ -6,14 +6,14 @@
 
 #include <random>
 
-#include "frontends/vectornav/vn_stream_decoder.hpp"
+#include "frontends/vectornav/decoder.hpp"
 #include "tests/frontends/vectornav/stream_fixture.hpp"
 
 namespace {
 
 using navfuse::Measurement;
 using navfuse::frontends::DecodeSink;
-using navfuse::frontends::vn::VnStreamDecoder;
+using navfuse::frontends::vectornav::VnStreamDecoder;
 
 constexpr int kEpochs = 60 * 200;           // one minute of log
 constexpr double kCorruptedFraction = 0.01;
@@ -27,7 +27,7 @@ struct CountingSink : DecodeSink {
 
 const std::vector<std::uint8_t>& corrupted_log() {
   static const std::vector<std::uint8_t> log = [] {
-    std::vector<std::uint8_t> bytes = navfuse::frontends::vn::test::make_vn_stream(kEpochs, false).bytes;
+    std::vector<std::uint8_t> bytes = navfuse::frontends::vectornav::test::make_vn_stream(kEpochs, false).bytes;
     std::mt19937_64 rng(kSeed);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (auto& b : bytes)

@@ -28,7 +28,7 @@ class FeClient {
  public:
   struct Received {
     std::vector<std::int64_t> pose_times_ns;  // p1_time of every Pose, in arrival order
-    std::vector<fe::CommandResponseMessage> responses;
+    std::vector<frontends::fusionengine::CommandResponseMessage> responses;
     std::uint64_t frames = 0;
   };
 
@@ -71,15 +71,15 @@ class FeClient {
         return;
       }
       std::lock_guard lock(mutex_);
-      framer_.feed(std::span<const std::uint8_t>(buf.data(), static_cast<std::size_t>(n)), [&](const fe::Frame& f) {
+      framer_.feed(std::span<const std::uint8_t>(buf.data(), static_cast<std::size_t>(n)), [&](const frontends::fusionengine::Frame& f) {
         ++received_.frames;
-        fe::PayloadReader r(f.payload);
-        if (f.header.message_type == fe::to_u16(fe::MessageType::kPose)) {
-          fe::PoseMessage m;
+        frontends::fusionengine::PayloadReader r(f.payload);
+        if (f.header.message_type == frontends::fusionengine::to_u16(frontends::fusionengine::MessageType::kPose)) {
+          frontends::fusionengine::PoseMessage m;
           m.visit(r);
           if (r.ok()) received_.pose_times_ns.push_back(m.p1_time.ns());
-        } else if (f.header.message_type == fe::to_u16(fe::MessageType::kCommandResponse)) {
-          fe::CommandResponseMessage m;
+        } else if (f.header.message_type == frontends::fusionengine::to_u16(frontends::fusionengine::MessageType::kCommandResponse)) {
+          frontends::fusionengine::CommandResponseMessage m;
           m.visit(r);
           if (r.ok()) received_.responses.push_back(m);
         }
@@ -88,8 +88,8 @@ class FeClient {
   }
 
   io::UniqueFd fd_;
-  fe::FusionEngineWriter writer_;
-  fe::Framer framer_;
+  frontends::fusionengine::FusionEngineWriter writer_;
+  frontends::fusionengine::Framer framer_;
   std::mutex mutex_;
   Received received_;
   std::thread reader_;

@@ -16,6 +16,8 @@
 namespace navfuse::apps {
 namespace {
 
+namespace fe = frontends::fusionengine;
+
 struct Reply {
   std::vector<std::uint16_t> types;
   std::vector<std::vector<std::uint8_t>> payloads;

@@ -23,7 +23,7 @@
 #include "frontends/mip/decoder.hpp"
 #include "frontends/mip/framer.hpp"
 #include "frontends/mip/packet.hpp"
-#include "frontends/mip/packet_writer.hpp"
+#include "frontends/mip/writer.hpp"
 #include "tests/frontends/mip/test_util.hpp"
 #include "tests/integration/child_process.hpp"
 #include "tests/integration/test_paths.hpp"
@@ -184,7 +184,7 @@ TEST_F(RunAidingTest, WheelSpeedOnAnotherDevicesClockIsRejectedAsTimeBase) {
   auto nav = start(udp_port, {"--quiet"});
   // Twenty FusionEngine VehicleSpeedInput messages stamped on P1 time (the sending device's own
   // clock): the VN-300's IMU is on GPS time, and no mapping between the two clocks exists.
-  fe::FusionEngineEncoder encoder({.sensor_inputs = true});
+  frontends::fusionengine::FusionEngineEncoder encoder({.sensor_inputs = true});
   constexpr int kSpeeds = 20;
   for (int i = 0; i < kSpeeds; ++i) {
     VehicleSpeed v;

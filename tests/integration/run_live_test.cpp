@@ -182,17 +182,17 @@ TEST_F(RunLiveTest, SerialDeviceLcmAidingFeCommandsReplugAndSigterm) {
   ASSERT_EQ(aid.exit_code, 0) << aid.output;
 
   // 3. SetMessageRate: Pose every 100 ms instead of output.rate_hz; the device answers OK.
-  fe::SetMessageRateMessage rate;
-  rate.protocol = static_cast<std::uint8_t>(fe::ProtocolType::kFusionEngine);
-  rate.message_id = fe::to_u16(fe::MessageType::kPose);
-  rate.rate = static_cast<std::uint8_t>(fe::MessageRate::k100Ms);
+  frontends::fusionengine::SetMessageRateMessage rate;
+  rate.protocol = static_cast<std::uint8_t>(frontends::fusionengine::ProtocolType::kFusionEngine);
+  rate.message_id = frontends::fusionengine::to_u16(frontends::fusionengine::MessageType::kPose);
+  rate.rate = static_cast<std::uint8_t>(frontends::fusionengine::MessageRate::k100Ms);
   const std::uint32_t sequence = fe.send(rate);
   const io::Deadline answered(kTimeoutMs);
   while (fe.snapshot().responses.empty() && !answered.expired()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
   const FeClient::Received before = fe.snapshot();
   ASSERT_EQ(before.responses.size(), 1u);
   EXPECT_EQ(before.responses[0].source_sequence, sequence);
-  EXPECT_EQ(before.responses[0].response, static_cast<std::uint8_t>(fe::Response::kOk));
+  EXPECT_EQ(before.responses[0].response, static_cast<std::uint8_t>(frontends::fusionengine::Response::kOk));
   EXPECT_NEAR(median_spacing_s(before.pose_times_ns, log.start_ns), 0.02, 1e-3);
 
   // 4. Unplug the device and plug it back in: the process keeps running and reopens it.

@@ -9,7 +9,7 @@
 #include "frontends/fusionengine/decoder.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 namespace {
 
 using rot::kDegToRad;
@@ -112,4 +112,4 @@ TEST(FeCapture, FramesOfSpecLayoutsReencodeToIdenticalBytes) {
 }
 
 }  // namespace
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

@@ -12,7 +12,7 @@
 #include "frontends/fusionengine/writer.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 namespace {
 
 using test::from_hex;
@@ -227,4 +227,4 @@ TEST(FeDigestExamples, DerivedColdStartVectorsAndSourceIdRule) {
 }
 
 }  // namespace
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

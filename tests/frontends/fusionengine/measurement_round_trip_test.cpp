@@ -12,7 +12,7 @@
 #include "frontends/fusionengine/encoder.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 namespace {
 
 using rot::kDegToRad;
@@ -339,4 +339,4 @@ TEST(FeConventions, UndulationFromEgm96OrInvalid) {
 }
 
 }  // namespace
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

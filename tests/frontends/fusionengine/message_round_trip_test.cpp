@@ -12,7 +12,7 @@
 #include "random_fill.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 namespace {
 
 template <class M>
@@ -161,4 +161,4 @@ TEST(FeMessageRoundTrip, ShortPayloadIsADecodeErrorNotACrash) {
 }
 
 }  // namespace
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

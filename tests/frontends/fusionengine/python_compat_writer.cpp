@@ -10,7 +10,7 @@
 #include "frontends/fusionengine/config_types.hpp"
 #include "frontends/fusionengine/writer.hpp"
 
-using namespace navfuse::fe;
+using namespace navfuse::frontends::fusionengine;
 
 namespace {
 

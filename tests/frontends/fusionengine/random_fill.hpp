@@ -13,7 +13,7 @@
 #include "frontends/fusionengine/config_types.hpp"
 #include "frontends/fusionengine/wire.hpp"
 
-namespace navfuse::fe::test {
+namespace navfuse::frontends::fusionengine::test {
 
 class RandomFill {
  public:
@@ -65,4 +65,4 @@ class RandomFill {
   std::mt19937_64& rng_;
 };
 
-}  // namespace navfuse::fe::test
+}  // namespace navfuse::frontends::fusionengine::test

@@ -11,7 +11,7 @@
 #include "frontends/fusionengine/encoder.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 namespace {
 
 constexpr std::int64_t kT0 = 1'400'000'000'000'000'000;
@@ -277,4 +277,4 @@ TEST(FeStreamDecoder, CountersAndMeasurementCountsEqualWhatWasWritten) {
 }
 
 }  // namespace
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

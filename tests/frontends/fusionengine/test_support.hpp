@@ -16,7 +16,7 @@
 #include "frontends/fusionengine/payload_reader.hpp"
 #include "frontends/fusionengine/writer.hpp"
 
-namespace navfuse::fe::test {
+namespace navfuse::frontends::fusionengine::test {
 
 class CollectingSink : public frontends::DecodeSink {
  public:
@@ -113,4 +113,4 @@ inline std::vector<OwnedFrame> frames_of(std::span<const std::uint8_t> stream) {
   return out;
 }
 
-}  // namespace navfuse::fe::test
+}  // namespace navfuse::frontends::fusionengine::test

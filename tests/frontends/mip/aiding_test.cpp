@@ -10,7 +10,7 @@
 #include "frontends/mip/aiding.hpp"
 #include "frontends/mip/commands.hpp"
 #include "frontends/mip/packet.hpp"
-#include "frontends/mip/packet_writer.hpp"
+#include "frontends/mip/writer.hpp"
 #include "tests/frontends/mip/test_util.hpp"
 
 namespace navfuse::frontends::mip {

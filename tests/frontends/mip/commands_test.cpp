@@ -2,12 +2,12 @@
 // CommandResponder answering as a CV7 would.
 #include <gtest/gtest.h>
 
-#include "frontends/mip/command_responder.hpp"
 #include "frontends/mip/commands.hpp"
 #include "frontends/mip/field_schema.hpp"
 #include "frontends/mip/frame_record.hpp"
 #include "frontends/mip/framer.hpp"
-#include "frontends/mip/packet_writer.hpp"
+#include "frontends/mip/responder.hpp"
+#include "frontends/mip/writer.hpp"
 #include "tests/frontends/mip/test_util.hpp"
 
 namespace navfuse::frontends::mip {
@@ -119,6 +119,21 @@ TEST(MipCommands, ResponderAnswersLikeACv7) {
   EXPECT_EQ(reply_of(reply).at(0).code, ReplyCode::kAck);
   EXPECT_TRUE(dev.aiding_handler().frame(1).configured);
   EXPECT_NEAR(dev.aiding_handler().frame(1).translation_m.x(), -0.32, 1e-6);
+}
+
+// The set-up's reply check (FrontendInfo::find_refusal): ACKs pass, the first NACK is named with
+// its code and the command it answers (ACK/NACK field 0xF1: echoed descriptor, code; L3852).
+TEST(MipCommands, FindRefusalNamesTheFirstNack) {
+  std::vector<std::uint8_t> bytes = test::hex("75 65 01 04 04 F1 01 00 D5 6A");  // Ping ACK (L3913)
+  EXPECT_EQ(find_refusal(bytes), "");
+  bytes.push_back(0x00);  // noise between packets
+  const std::uint8_t unknown_command[] = {0x55, 0x01};
+  const std::vector<std::uint8_t> nack = make_packet(0x01, 0xF1, unknown_command);
+  bytes.insert(bytes.end(), nack.begin(), nack.end());
+  const std::uint8_t bad_parameter[] = {0x0F, 0x03};
+  const std::vector<std::uint8_t> second = make_packet(0x0C, 0xF1, bad_parameter);
+  bytes.insert(bytes.end(), second.begin(), second.end());
+  EXPECT_EQ(find_refusal(bytes), "MIP NACK 1 for command (0x01,0x55)");
 }
 
 }  // namespace

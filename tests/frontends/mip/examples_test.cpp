@@ -10,7 +10,7 @@
 #include "frontends/mip/field_schema.hpp"
 #include "frontends/mip/frame_record.hpp"
 #include "frontends/mip/framer.hpp"
-#include "frontends/mip/packet_writer.hpp"
+#include "frontends/mip/writer.hpp"
 #include "tests/frontends/mip/test_util.hpp"
 
 namespace navfuse::frontends::mip {

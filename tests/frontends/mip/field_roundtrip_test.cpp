@@ -9,8 +9,8 @@
 #include "frontends/mip/field_schema.hpp"
 #include "frontends/mip/frame_record.hpp"
 #include "frontends/mip/framer.hpp"
-#include "frontends/mip/packet_writer.hpp"
 #include "frontends/mip/protocol.hpp"
+#include "frontends/mip/writer.hpp"
 
 namespace navfuse::frontends::mip {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "core/bytes/checks.hpp"
 #include "frontends/mip/framer.hpp"
-#include "frontends/mip/packet_writer.hpp"
+#include "frontends/mip/writer.hpp"
 #include "tests/frontends/mip/test_util.hpp"
 
 namespace navfuse::frontends::mip {

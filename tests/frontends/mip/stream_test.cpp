@@ -12,7 +12,7 @@
 #include "frontends/mip/encoder.hpp"
 #include "frontends/mip/framer.hpp"
 #include "frontends/mip/frontend.hpp"
-#include "frontends/mip/packet_writer.hpp"
+#include "frontends/mip/writer.hpp"
 #include "tests/frontends/mip/test_util.hpp"
 
 namespace navfuse::frontends::mip {
@@ -98,7 +98,7 @@ TEST(MipStream, CountersAndMeasurementsMatchWhatWasWritten) {
   for (int trial = 0; trial < 4; ++trial) {
     std::mt19937 rng(static_cast<std::uint32_t>(trial));
     std::uniform_int_distribution<std::size_t> cut(1, trial == 0 ? b.bytes.size() : 97);
-    auto dec = mip_frontend().make_decoder();
+    auto dec = frontend().make_decoder();
     ASSERT_EQ(dec->format(), "mip");
     test::CollectingSink sink;
     std::size_t pos = 0;
@@ -123,10 +123,10 @@ TEST(MipStream, CountersAndMeasurementsMatchWhatWasWritten) {
 TEST(MipStream, ProbeCountsValidPacketsAndRejectsOtherProtocols) {
   const auto b = build_stream(2);
   const auto head = std::span<const std::uint8_t>(b.bytes).first(4096);
-  EXPECT_GT(mip_frontend().probe(head), 20u);
+  EXPECT_GT(frontend().probe(head), 20u);
   const std::string nmea = "$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n";
   std::vector<std::uint8_t> text(nmea.begin(), nmea.end());
-  EXPECT_EQ(mip_frontend().probe(text), 0u);
+  EXPECT_EQ(frontend().probe(text), 0u);
 }
 
 TEST(MipStream, CorruptedStreamNeverCrashesAndAccountsForEveryByte) {

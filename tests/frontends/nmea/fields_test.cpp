@@ -3,7 +3,7 @@
 
 #include "frontends/nmea/fields.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 
 TEST(NmeaFields, UintDecimalAndHexExamples) {
@@ -77,4 +77,4 @@ TEST(NmeaFields, CaseInsensitiveNames) {
 }
 
 }  // namespace
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

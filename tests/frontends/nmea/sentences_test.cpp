@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "core/bytes/checks.hpp"
-#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/framer.hpp"
 #include "frontends/nmea/sentences.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 
 // Frames one sentence (appending "\r\n") and splits it; nullopt if the framer rejects it.
@@ -407,4 +407,4 @@ TEST_F(RoundTrip, GsaGsv) {
 }
 
 }  // namespace
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

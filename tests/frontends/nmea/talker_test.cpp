@@ -3,7 +3,7 @@
 
 #include "frontends/nmea/talker.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 
 TEST(NmeaTalker, H30GlobalNumbering) {
@@ -40,4 +40,4 @@ TEST(NmeaTalker, NumberingRoundTrips) {
 }
 
 }  // namespace
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

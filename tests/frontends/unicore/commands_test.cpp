@@ -2,12 +2,12 @@
 // examples), and the reply parser.
 #include <gtest/gtest.h>
 
-#include "frontends/unicore/commands.hpp"
-#include "frontends/unicore/reply.hpp"
 #include "core/bytes/checks.hpp"
 #include "core/time/gps_time.hpp"
+#include "frontends/unicore/commands.hpp"
+#include "frontends/unicore/commands_reply.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 
 std::string line(const char* s) { return std::string(s) + "\r\n"; }
@@ -140,5 +140,13 @@ TEST(UnicoreReplies, ReaderFindsRepliesInAStream) {
   EXPECT_EQ(reader.counters().skipped_bytes, 4u);
 }
 
+// The set-up's reply check (FrontendInfo::find_refusal): "$OK" passes, the "$FAIL" line is returned.
+TEST(UnicoreReplies, FindRefusalReturnsTheFailLine) {
+  const std::string ok = "$OK*04\r\n$SNRSTAT,3,0,0,2*5C\r\n";
+  EXPECT_EQ(find_refusal(bytes::as_bytes(ok)), "");
+  const std::string refused = ok + "$FAIL,0*1E\r\n$OK*04\r\n";
+  EXPECT_EQ(find_refusal(bytes::as_bytes(refused)), "$FAIL,0*1E");
+}
+
 }  // namespace
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

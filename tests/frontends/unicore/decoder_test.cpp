@@ -11,7 +11,7 @@
 #include "frontends/unicore/frontend.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 
 using test::CollectingSink;
@@ -224,7 +224,7 @@ TEST(UnicoreDecoder, RandomCorruptionNeverBreaksTheCounters) {
 }
 
 TEST(UnicoreFrontend, ProbeCountsOnlyThisProtocol) {
-  const auto& fe = frontends::unicore_frontend();
+  const auto& fe = frontends::unicore::frontend();
   EXPECT_EQ(fe.format, "unicore");
   const std::string s = example_stream().bytes;
   // Checksummed sentences with known names: NAVATT, GYOACC, GYOACC-V x2, NAVPOS, NAVVEL, GPGGA,
@@ -236,4 +236,4 @@ TEST(UnicoreFrontend, ProbeCountsOnlyThisProtocol) {
 }
 
 }  // namespace
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -11,7 +11,7 @@
 #include "frontends/unicore/messages.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 
 using test::frame;
@@ -198,4 +198,4 @@ TEST(UnicoreExamples, NoticeLsfCwout) {
 }
 
 }  // namespace
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

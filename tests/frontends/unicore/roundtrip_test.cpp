@@ -11,10 +11,10 @@
 #include "core/time/gps_time.hpp"
 #include "frontends/unicore/decoder.hpp"
 #include "frontends/unicore/encoder.hpp"
-#include "frontends/unicore/measurement_mapping.hpp"
+#include "frontends/unicore/to_core.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 
 using test::CollectingSink;
@@ -287,4 +287,4 @@ TEST(UnicoreRoundTrip, DeadReckoningAndStdThroughGgaAndGst) {
 }
 
 }  // namespace
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -8,9 +8,9 @@
 #include "core/bytes/checks.hpp"
 #include "frontends/common/stream_decoder.hpp"
 #include "frontends/nmea/fields.hpp"
-#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/framer.hpp"
 
-namespace navfuse::unicore::test {
+namespace navfuse::frontends::unicore::test {
 
 // Frames `sentence` + "\r\n"; the body and its fields, or nullopt if the framer rejects it.
 struct Framed {
@@ -53,4 +53,4 @@ class CollectingSink : public frontends::DecodeSink {
   bool frames_;
 };
 
-}  // namespace navfuse::unicore::test
+}  // namespace navfuse::frontends::unicore::test

@@ -4,7 +4,7 @@
 #include "core/time/gps_time.hpp"
 #include "frontends/unicore/utc_clock.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 
 constexpr std::int64_t kS = 1'000'000'000;
@@ -93,4 +93,4 @@ TEST(UtcClock, LsfAnnouncedLeapSecondTakesEffectAfterDayDn) {
 }
 
 }  // namespace
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -10,7 +10,7 @@
 #include "frontends/vectornav/ascii_sentence.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 
 using rot::kDegToRad;
@@ -303,4 +303,4 @@ TEST(VnAsciiVectors, NmeaIsFramedButUnknown) {
 }
 
 }  // namespace
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

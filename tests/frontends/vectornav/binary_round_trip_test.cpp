@@ -12,7 +12,7 @@
 #include "frontends/vectornav/split_packet.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 
 // A field "I/O" that fills every visited field with a random value (finite floats).
@@ -162,4 +162,4 @@ TEST(VnBinaryRoundTrip, LostSplitPacketIsADecodeError) {
 }
 
 }  // namespace
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

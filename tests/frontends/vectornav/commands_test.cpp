@@ -2,11 +2,12 @@
 // fusion setup sequence read back through the reply parser.
 #include <gtest/gtest.h>
 
+#include "core/bytes/checks.hpp"
 #include "frontends/vectornav/ascii_registers.hpp"
 #include "frontends/vectornav/commands.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::frontends::vn::cmd {
+namespace navfuse::frontends::vectornav::cmd {
 namespace {
 
 TEST(VnCommands, SimpleCommandsMatchTheIcdExamples) {
@@ -147,5 +148,13 @@ TEST(VnCommands, FusionSetupSequence) {
   EXPECT_EQ(1 + wire.size() + payload + kCrcBytes, 159u);
 }
 
+// The set-up's reply check (FrontendInfo::find_refusal): the first error line, without its end.
+TEST(VnCommands, FindRefusalReturnsTheErrorLine) {
+  const std::string ok = "$VNWRG,51,1,0.1,0.01*5F\r\n";  // L3741 as a write reply
+  EXPECT_EQ(find_refusal(bytes::as_bytes(ok)), "");
+  const std::string refused = ok + "$VNERR,03*72\r\n$VNERR,0C*02\r\n";
+  EXPECT_EQ(find_refusal(bytes::as_bytes(refused)), "$VNERR,03*72");
+}
+
 }  // namespace
-}  // namespace navfuse::frontends::vn::cmd
+}  // namespace navfuse::frontends::vectornav::cmd

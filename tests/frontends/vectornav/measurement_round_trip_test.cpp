@@ -5,10 +5,10 @@
 #include <random>
 
 #include "core/rotation/rotation.hpp"
-#include "frontends/vectornav/vn_measurement_encoder.hpp"
+#include "frontends/vectornav/encoder.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 
 constexpr double kFloatRel = 2e-7;  // IEEE binary32: 2^-23 relative
@@ -232,4 +232,4 @@ TEST(VnMeasurementRoundTrip, KindsTheProtocolCannotCarry) {
 }
 
 }  // namespace
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

@@ -10,7 +10,7 @@
 #include "stream_fixture.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 
 void expect_accounting(const VnStreamDecoder& d) {
@@ -217,4 +217,4 @@ TEST(VnRobustness, NonNumericAsciiFieldsAreDecodeErrors) {
 }
 
 }  // namespace
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

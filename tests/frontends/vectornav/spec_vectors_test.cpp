@@ -10,7 +10,7 @@
 #include "frontends/vectornav/binary_header.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 
 using test::from_hex;
@@ -205,4 +205,4 @@ TEST(VnSpecVectors, CorruptedExamplesAreRejectedForTheirCrc) {
 }
 
 }  // namespace
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

@@ -8,7 +8,7 @@
 #include "stream_fixture.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 
 TEST(VnStreamCounts, CleanLogMatchesWhatWasWritten) {
@@ -84,12 +84,12 @@ TEST(VnStreamCounts, CorruptedFramesAreLostAloneAndNeighboursSurvive) {
 TEST(VnStreamCounts, ProbeRecognisesTheLogAndNotOtherText) {
   const test::StreamContent c = test::make_vn_stream(200);
   const std::span<const std::uint8_t> head(c.bytes.data(), std::min<std::size_t>(c.bytes.size(), 65536));
-  EXPECT_GT(vectornav_frontend().probe(head), 100u);
+  EXPECT_GT(frontend().probe(head), 100u);
   const auto nmea = test::text_bytes("$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n");
-  EXPECT_EQ(vectornav_frontend().probe(nmea), 0u);
-  EXPECT_EQ(vectornav_frontend().format, "vn");
-  EXPECT_EQ(vectornav_frontend().make_decoder()->format(), "vn");
+  EXPECT_EQ(frontend().probe(nmea), 0u);
+  EXPECT_EQ(frontend().format, "vn");
+  EXPECT_EQ(frontend().make_decoder()->format(), "vn");
 }
 
 }  // namespace
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

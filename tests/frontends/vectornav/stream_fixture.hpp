@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "core/rotation/rotation.hpp"
-#include "frontends/vectornav/vn_measurement_encoder.hpp"
+#include "frontends/vectornav/encoder.hpp"
 
-namespace navfuse::frontends::vn::test {
+namespace navfuse::frontends::vectornav::test {
 
 struct StreamContent {
   std::vector<std::uint8_t> bytes;
@@ -101,4 +101,4 @@ inline StreamContent make_vn_stream(int epochs, bool with_ascii = true) {
   return c;
 }
 
-}  // namespace navfuse::frontends::vn::test
+}  // namespace navfuse::frontends::vectornav::test

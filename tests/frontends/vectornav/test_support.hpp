@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "frontends/common/stream_decoder.hpp"
-#include "frontends/vectornav/vn_stream_decoder.hpp"
+#include "frontends/vectornav/decoder.hpp"
 
-namespace navfuse::frontends::vn::test {
+namespace navfuse::frontends::vectornav::test {
 
 // "FA 01 08 00" -> bytes (spaces ignored).
 inline std::vector<std::uint8_t> from_hex(std::string_view text) {
@@ -65,4 +65,4 @@ inline const FieldValue* field(const FrameRecord& r, std::string_view name) {
   return nullptr;
 }
 
-}  // namespace navfuse::frontends::vn::test
+}  // namespace navfuse::frontends::vectornav::test

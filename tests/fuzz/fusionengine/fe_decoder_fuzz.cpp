@@ -29,7 +29,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size == 0) return 0;
   const std::size_t chunk = 1 + data[0];
   std::span<const std::uint8_t> bytes(data + 1, size - 1);
-  navfuse::fe::FusionEngineDecoder decoder;
+  navfuse::frontends::fusionengine::FusionEngineDecoder decoder;
   CountingSink sink;
   for (std::size_t at = 0; at < bytes.size(); at += chunk) {
     decoder.feed(bytes.subspan(at, std::min(chunk, bytes.size() - at)), sink);

@@ -7,9 +7,9 @@
 #include <span>
 #include <vector>
 
-#include "frontends/mip/command_responder.hpp"
 #include "frontends/mip/decoder.hpp"
 #include "frontends/mip/framer.hpp"
+#include "frontends/mip/responder.hpp"
 
 namespace {
 

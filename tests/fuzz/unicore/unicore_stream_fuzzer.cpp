@@ -7,8 +7,8 @@
 #include <span>
 #include <string_view>
 
+#include "frontends/unicore/commands_reply.hpp"
 #include "frontends/unicore/decoder.hpp"
-#include "frontends/unicore/reply.hpp"
 
 namespace {
 
@@ -40,16 +40,16 @@ void check(const frontends::StreamCounters& c, std::size_t size) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::span<const std::uint8_t> bytes(data, size);
 
-  unicore::DecoderOptions options;
+  frontends::unicore::DecoderOptions options;
   options.odometer_m_per_pulse = 0.02;
-  unicore::UnicoreDecoder whole(options);
+  frontends::unicore::UnicoreDecoder whole(options);
   Sink a;
   whole.feed(bytes, a);
   whole.finish(a);
   check(whole.counters(), size);
 
   // The same bytes in chunks whose sizes come from the data itself.
-  unicore::UnicoreDecoder chunked(options);
+  frontends::unicore::UnicoreDecoder chunked(options);
   Sink b;
   std::size_t at = 0;
   std::size_t step = size > 0 ? (data[0] % 61) + 1 : 1;
@@ -67,11 +67,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     __builtin_trap();
   }
 
-  unicore::ReplyReader reader;
+  frontends::unicore::ReplyReader reader;
   std::size_t replies = 0;
-  reader.feed(bytes, [&](const unicore::Reply&) { ++replies; });
+  reader.feed(bytes, [&](const frontends::unicore::Reply&) { ++replies; });
   if (replies > reader.counters().frames) __builtin_trap();
-  const auto line = unicore::parse_reply_line(
+  const auto line = frontends::unicore::parse_reply_line(
       std::string_view(reinterpret_cast<const char*>(data), std::min<std::size_t>(size, 256)));
   if (line && line->fields.size() == 0) __builtin_trap();
   return 0;

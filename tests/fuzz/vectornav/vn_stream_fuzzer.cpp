@@ -9,7 +9,7 @@
 
 #include "frontends/vectornav/binary_codec.hpp"
 #include "frontends/vectornav/commands.hpp"
-#include "frontends/vectornav/vn_stream_decoder.hpp"
+#include "frontends/vectornav/decoder.hpp"
 
 namespace {
 
@@ -24,11 +24,11 @@ struct Sink : DecodeSink {
   bool wants_frames() const override { return true; }
 };
 
-void check(const vn::VnStreamDecoder& d) {
+void check(const vectornav::VnStreamDecoder& d) {
   const StreamCounters& k = d.counters();
   // Every byte fed is framed, skipped or still buffered; at most one frame is buffered.
   if (k.bytes != d.framed_bytes() + k.skipped_bytes + d.buffered_bytes()) std::abort();
-  if (d.buffered_bytes() > vn::kMaxAsciiSentenceBytes + vn::kMaxBinaryPacketBytes) std::abort();
+  if (d.buffered_bytes() > vectornav::kMaxAsciiSentenceBytes + vectornav::kMaxBinaryPacketBytes) std::abort();
   if (k.unknown_frames > k.frames || k.bad_frames > k.skipped_bytes) std::abort();
 }
 
@@ -36,7 +36,7 @@ void check(const vn::VnStreamDecoder& d) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::span<const std::uint8_t> in(data, size);
-  vn::VnStreamDecoder d;
+  vectornav::VnStreamDecoder d;
   Sink sink;
   // Chunk sizes from the input's own bytes: 1..64.
   std::size_t at = 0, k = 0;
@@ -51,17 +51,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (d.buffered_bytes() != 0) std::abort();
 
   // The same bytes as a message body and as a device reply.
-  vn::BinaryMessage m;
-  if (vn::decode_binary_body(in, m)) {
+  vectornav::BinaryMessage m;
+  if (vectornav::decode_binary_body(in, m)) {
     FrameRecord r;
-    vn::describe_binary_message(m, r);
+    vectornav::describe_binary_message(m, r);
   }
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  if (const auto reply = vn::cmd::parse_reply(text)) {
-    (void)vn::cmd::parse_binary_output(*reply);
-    (void)vn::cmd::parse_reference_frame_rotation(*reply);
-    (void)vn::cmd::parse_compass_baseline(*reply);
-    (void)vn::cmd::parse_ins_basic_config(*reply);
+  if (const auto reply = vectornav::cmd::parse_reply(text)) {
+    (void)vectornav::cmd::parse_binary_output(*reply);
+    (void)vectornav::cmd::parse_reference_frame_rotation(*reply);
+    (void)vectornav::cmd::parse_compass_baseline(*reply);
+    (void)vectornav::cmd::parse_ins_basic_config(*reply);
   }
   return 0;
 }

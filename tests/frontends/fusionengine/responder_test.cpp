@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "frontends/fusionengine/device_control.hpp"
+#include "frontends/fusionengine/responder.hpp"
 #include "test_support.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 namespace {
 
 struct Reply {
@@ -167,4 +167,4 @@ TEST(FeDeviceControl, MessageRatesResetAndVersion) {
 }
 
 }  // namespace
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

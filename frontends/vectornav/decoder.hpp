@@ -14,16 +14,16 @@
 #include <string_view>
 
 #include "frontends/common/stream_decoder.hpp"
-#include "frontends/vectornav/ascii_mapper.hpp"
 #include "frontends/vectornav/ascii_sentence.hpp"
-#include "frontends/vectornav/binary_mapper.hpp"
 #include "frontends/vectornav/binary_message.hpp"
+#include "frontends/vectornav/decoder_ascii.hpp"
 #include "frontends/vectornav/decoder_options.hpp"
-#include "frontends/vectornav/port_framer.hpp"
+#include "frontends/vectornav/framer.hpp"
 #include "frontends/vectornav/split_packet.hpp"
 #include "frontends/vectornav/stream_clock.hpp"
+#include "frontends/vectornav/to_core.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 // Why a frame's content was not used, for reports beyond the StreamCounters totals.
 enum class DecodeIssue : std::uint8_t {
@@ -68,4 +68,4 @@ class VnStreamDecoder final : public StreamDecoder {
   std::array<std::uint64_t, static_cast<std::size_t>(DecodeIssue::kCount)> issues_{};
 };
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

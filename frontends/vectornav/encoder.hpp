@@ -26,7 +26,7 @@
 #include "frontends/vectornav/ascii_sentence.hpp"
 #include "frontends/vectornav/binary_message.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 struct EncoderOptions {
   // TimeStartup of the first measurement (the device has been running this long, ns).
@@ -58,4 +58,4 @@ class VnMeasurementEncoder final : public MeasurementEncoder {
   std::uint8_t split_id_ = 0;
 };
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

@@ -1,4 +1,4 @@
-#include "frontends/vectornav/binary_mapper.hpp"
+#include "frontends/vectornav/to_core.hpp"
 
 #include <cmath>
 
@@ -9,7 +9,7 @@
 #include "frontends/vectornav/group_imu.hpp"
 #include "frontends/vectornav/ins_status.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 
 using rot::kDegToRad;
@@ -335,4 +335,4 @@ int BinaryMapper::map_solution(const BinaryMessage& m, const Stamp& stamp, Decod
   return 0;
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

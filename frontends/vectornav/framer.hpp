@@ -18,7 +18,7 @@
 #include "frontends/vectornav/binary_header.hpp"
 #include "frontends/vectornav/split_packet.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 enum class FrameKind : std::uint8_t { kBinary, kSplit, kAscii };
 
@@ -162,4 +162,4 @@ void PortFramer::finish(OnFrame&& on_frame) {
   buffer_.clear();
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

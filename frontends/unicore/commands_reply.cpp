@@ -1,8 +1,9 @@
-#include "frontends/unicore/reply.hpp"
+#include "frontends/unicore/commands_reply.hpp"
 
 #include "core/bytes/checks.hpp"
+#include "frontends/common/device_command.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 
 // Headers that come back as configuration reports: every CFG* command (L160) plus the query
@@ -72,4 +73,6 @@ void ReplyReader::feed(std::span<const std::uint8_t> bytes,
   });
 }
 
-}  // namespace navfuse::unicore
+std::string find_refusal(std::span<const std::uint8_t> reply_bytes) { return line_starting_with(reply_bytes, "$FAIL"); }
+
+}  // namespace navfuse::frontends::unicore

@@ -8,12 +8,13 @@
 #include <functional>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 
 #include "frontends/nmea/fields.hpp"
-#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/framer.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 
 enum class ReplyKind : std::uint8_t {
   // "$OK" may come as "$OK", "$OK*04" or "$OK,*28": the spec shows only the first (digest §11
@@ -43,6 +44,10 @@ std::optional<Reply> parse_reply_line(std::string_view line);
 // Whether `name` (case-insensitive, without '$') is a reply or configuration-report name.
 bool is_reply_name(std::string_view name);
 
+// Looks through the bytes received after a command for a refusal; returns the first "$FAIL,..."
+// line (L282), "" when there is none.
+std::string find_refusal(std::span<const std::uint8_t> reply_bytes);
+
 // Feeds a byte stream (the command port) and calls `on_reply` for each reply found; other
 // sentences are ignored. Counters as for any framer.
 class ReplyReader {
@@ -55,4 +60,4 @@ class ReplyReader {
   nmea::SentenceFramer framer_;
 };
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

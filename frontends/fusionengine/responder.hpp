@@ -28,7 +28,7 @@
 #include "frontends/fusionengine/message_catalog.hpp"
 #include "frontends/fusionengine/writer.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 
 // Strings reported in VersionInfo (spec §3.7.3).
 struct VersionStrings {
@@ -91,4 +91,4 @@ class DeviceControl {
   FusionEngineWriter writer_;
 };
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

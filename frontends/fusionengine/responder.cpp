@@ -1,11 +1,11 @@
-#include "frontends/fusionengine/device_control.hpp"
+#include "frontends/fusionengine/responder.hpp"
 
 #include <cmath>
 
 #include "core/rotation/rotation.hpp"
 #include "frontends/fusionengine/payload_reader.hpp"
 
-namespace navfuse::fe {
+namespace navfuse::frontends::fusionengine {
 namespace {
 
 using rot::kDegToRad;
@@ -316,4 +316,4 @@ void DeviceControl::on_frame(const Frame& f, std::vector<std::uint8_t>& out) {
   });
 }
 
-}  // namespace navfuse::fe
+}  // namespace navfuse::frontends::fusionengine

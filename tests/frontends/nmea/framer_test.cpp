@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "core/bytes/checks.hpp"
-#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/framer.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 
 struct Got {
@@ -202,4 +202,4 @@ TEST(SentenceFramer, SingleBitFlipsNeverPassAsAnotherChecksummedSentence) {
 }
 
 }  // namespace
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

@@ -24,7 +24,7 @@
 #include "frontends/nmea/sentences.hpp"
 #include "frontends/unicore/messages.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 
 // NAVACC reports only 2-D horizontal RMS (L1360-L1363). The per-axis horizontal std is that RMS
 // over sqrt(2); the vertical std, which the device does not report, is set to the 2-D RMS itself
@@ -63,4 +63,4 @@ std::uint32_t gga_quality_from_solution(const NavSolution& s);
 NavSolution solution_from_navatt(const Navatt& m, std::int64_t gps_ns, std::optional<NavMode> mode,
                                  const Snrstat* status);
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

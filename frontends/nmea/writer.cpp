@@ -1,11 +1,11 @@
-#include "frontends/nmea/sentence_writer.hpp"
+#include "frontends/nmea/writer.hpp"
 
 #include <charconv>
 #include <cmath>
 
 #include "core/bytes/checks.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 constexpr char kHexDigits[] = "0123456789ABCDEF";  // examples print upper case (digest §1.2)
 constexpr int kMaxDecimals = 12;
@@ -96,4 +96,4 @@ bool SentenceWriter::finish(std::vector<std::uint8_t>& out, std::size_t max_byte
   return true;
 }
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

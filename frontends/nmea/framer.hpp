@@ -16,7 +16,7 @@
 
 #include "frontends/common/stream_decoder.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 
 // "The total length of each message does not exceed 128 bytes" (Unicore spec L152), counted
 // here from the start character through the "\r\n" terminator.
@@ -180,4 +180,4 @@ void SentenceFramer::feed(std::span<const std::uint8_t> bytes, OnFrame&& on_fram
   }
 }
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

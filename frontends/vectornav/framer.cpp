@@ -1,9 +1,9 @@
-#include "frontends/vectornav/port_framer.hpp"
+#include "frontends/vectornav/framer.hpp"
 
 #include "core/bytes/checks.hpp"
 #include "frontends/vectornav/ascii_sentence.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 PortFramer::Attempt PortFramer::try_binary(const std::uint8_t* p, std::size_t n) {
   const std::span<const std::uint8_t> after_sync(p + 1, n - 1);
@@ -58,4 +58,4 @@ PortFramer::Attempt PortFramer::try_ascii(const std::uint8_t* p, std::size_t n) 
   return {check_sentence({p, length}).ok ? Verdict::kFrame : Verdict::kBad, length};
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

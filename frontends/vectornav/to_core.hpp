@@ -14,7 +14,7 @@
 #include "frontends/vectornav/decoder_options.hpp"
 #include "frontends/vectornav/stream_clock.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 class BinaryMapper {
  public:
@@ -42,4 +42,4 @@ std::optional<GnssFixType> fix_from_vn(std::uint8_t fix);
 // Core fix to the closest VN value (VN has one differential class, SBAS, and no PPP/DR value).
 std::uint8_t vn_from_fix(GnssFixType fix);
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

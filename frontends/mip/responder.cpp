@@ -1,9 +1,9 @@
-#include "frontends/mip/command_responder.hpp"
+#include "frontends/mip/responder.hpp"
 
 #include "core/bytes/checks.hpp"
 #include "frontends/mip/field_schema.hpp"
 #include "frontends/mip/packet.hpp"
-#include "frontends/mip/packet_writer.hpp"
+#include "frontends/mip/writer.hpp"
 
 namespace navfuse::frontends::mip {
 namespace {

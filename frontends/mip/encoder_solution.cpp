@@ -1,10 +1,10 @@
-#include "frontends/mip/solution_encoder.hpp"
+#include "frontends/mip/encoder_solution.hpp"
 
 #include "core/rotation/rotation.hpp"
 #include "frontends/mip/filter_status.hpp"
-#include "frontends/mip/packet_writer.hpp"
 #include "frontends/mip/protocol.hpp"
 #include "frontends/mip/time_fields.hpp"
+#include "frontends/mip/writer.hpp"
 
 namespace navfuse::frontends::mip {
 namespace {

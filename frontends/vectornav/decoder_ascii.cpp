@@ -1,4 +1,4 @@
-#include "frontends/vectornav/ascii_mapper.hpp"
+#include "frontends/vectornav/decoder_ascii.hpp"
 
 #include <array>
 #include <charconv>
@@ -8,10 +8,10 @@
 #include "core/rotation/rotation.hpp"
 #include "core/time/gps_time.hpp"
 #include "frontends/vectornav/ascii_registers.hpp"
-#include "frontends/vectornav/binary_mapper.hpp"
 #include "frontends/vectornav/ins_status.hpp"
+#include "frontends/vectornav/to_core.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 
 using rot::kDegToRad;
@@ -396,4 +396,4 @@ bool AsciiMapper::map_register(int id, std::span<const double> v, DecodeSink& si
   }
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

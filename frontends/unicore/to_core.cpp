@@ -1,11 +1,11 @@
-#include "frontends/unicore/measurement_mapping.hpp"
+#include "frontends/unicore/to_core.hpp"
 
 #include <cmath>
 
 #include "core/geodesy/geodesy.hpp"
 #include "core/rotation/rotation.hpp"
 
-namespace navfuse::unicore {
+namespace navfuse::frontends::unicore {
 namespace {
 
 constexpr double kMsToS = 1e-3;
@@ -204,4 +204,4 @@ NavSolution solution_from_navatt(const Navatt& m, std::int64_t gps_ns, std::opti
   return s;
 }
 
-}  // namespace navfuse::unicore
+}  // namespace navfuse::frontends::unicore

@@ -1,9 +1,9 @@
-#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/framer.hpp"
 
 #include <algorithm>
 #include <cstring>
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 namespace {
 
 constexpr std::array<std::uint8_t, 256> make_byte_classes() {
@@ -84,4 +84,4 @@ void SentenceFramer::finish() {
   swallow_lf_ = false;
 }
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

@@ -1,4 +1,4 @@
-#include "frontends/vectornav/vn_measurement_encoder.hpp"
+#include "frontends/vectornav/encoder.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -7,12 +7,12 @@
 #include "core/time/gps_time.hpp"
 #include "frontends/vectornav/ascii_registers.hpp"
 #include "frontends/vectornav/binary_codec.hpp"
-#include "frontends/vectornav/binary_mapper.hpp"
 #include "frontends/vectornav/float_cast.hpp"
 #include "frontends/vectornav/group_imu.hpp"
 #include "frontends/vectornav/ins_status.hpp"
+#include "frontends/vectornav/to_core.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 
 using rot::kRadToDeg;
@@ -184,4 +184,4 @@ bool VnMeasurementEncoder::encode_speed(const VehicleSpeed& s, std::vector<std::
   return true;
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

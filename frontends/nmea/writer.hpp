@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "frontends/nmea/fields.hpp"
-#include "frontends/nmea/sentence_framer.hpp"
+#include "frontends/nmea/framer.hpp"
 
-namespace navfuse::nmea {
+namespace navfuse::frontends::nmea {
 
 class SentenceWriter {
  public:
@@ -46,4 +46,4 @@ class SentenceWriter {
   bool overflow_ = false;
 };
 
-}  // namespace navfuse::nmea
+}  // namespace navfuse::frontends::nmea

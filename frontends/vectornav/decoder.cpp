@@ -1,8 +1,8 @@
-#include "frontends/vectornav/vn_stream_decoder.hpp"
+#include "frontends/vectornav/decoder.hpp"
 
 #include "frontends/vectornav/binary_codec.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 namespace {
 constexpr std::string_view kProtocol = "vn";
 constexpr std::string_view kBinaryName = "binary";
@@ -106,4 +106,4 @@ void VnStreamDecoder::on_ascii(const Frame& frame, DecodeSink& sink) {
   }
 }
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

@@ -1,4 +1,4 @@
-#include "frontends/mip/packet_writer.hpp"
+#include "frontends/mip/writer.hpp"
 
 #include "core/bytes/checks.hpp"
 #include "frontends/mip/protocol.hpp"

@@ -10,7 +10,7 @@
 #include "frontends/vectornav/decoder_options.hpp"
 #include "frontends/vectornav/stream_clock.hpp"
 
-namespace navfuse::frontends::vn {
+namespace navfuse::frontends::vectornav {
 
 enum class AsciiOutcome : std::uint8_t {
   kDecoded,  // a VectorNav sentence this decoder understands
@@ -36,4 +36,4 @@ class AsciiMapper {
   DecoderOptions options_;
 };
 
-}  // namespace navfuse::frontends::vn
+}  // namespace navfuse::frontends::vectornav

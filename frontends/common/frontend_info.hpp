@@ -1,0 +1,49 @@
+// What a front-end registers with the apps (README "Front-end layout"): everything the apps need
+// to know per protocol, so that they never compare format names. A difference between protocols
+// that an app must act on becomes a field here, filled in the protocol's frontend.cpp.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/config/config.hpp"
+#include "frontends/common/device_command.hpp"
+#include "frontends/common/device_error_class.hpp"
+#include "frontends/common/stream_decoder.hpp"
+
+namespace navfuse::frontends {
+
+struct FrontendInfo {
+  std::string_view format;       // "fe", "mip", "vn", "unicore": the INPUT prefix of DESIGN.md
+  std::string_view description;  // one line for --help
+  // Confidence that `head` (the first bytes of a stream, up to 64 KiB) is this protocol: the
+  // number of complete, checksum-valid frames found in it. 0 = not this protocol.
+  std::size_t (*probe)(std::span<const std::uint8_t> head) = nullptr;
+  std::unique_ptr<StreamDecoder> (*make_decoder)() = nullptr;
+  // nullptr when navfuse cannot write this protocol (then `navfuse sim` does not offer it).
+  std::unique_ptr<MeasurementEncoder> (*make_encoder)() = nullptr;
+
+  // The config defaults (core/config device profiles) of a stream in this format, used when no
+  // --config is given.
+  config::DeviceProfile default_profile = config::DeviceProfile::kGeneric;
+
+  // `navfuse run --configure-device`: the commands that make a fresh device stream what fusion
+  // needs, sent when the input link opens. nullptr when the device needs none.
+  std::vector<DeviceCommand> (*setup_commands)() = nullptr;
+  // Looks through the bytes received after a set-up command for the device's refusal; returns a
+  // one-line description of the first one, "" when there is none. nullptr: replies not checked.
+  std::string (*find_refusal)(std::span<const std::uint8_t> reply_bytes) = nullptr;
+
+  // `navfuse sim`: the errors of the device's own INS solution written beside the measurements.
+  DeviceErrorClass device_errors;
+  // `navfuse sim --wheel-out`: this protocol is the one a host uses to send wheel / vehicle speed
+  // to a fusion device, so simulated odometry is written in it.
+  bool odometry_input = false;
+};
+
+}  // namespace navfuse::frontends

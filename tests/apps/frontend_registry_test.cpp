@@ -1,0 +1,64 @@
+// What the apps take from FrontendInfo instead of comparing format names (issue 13): every
+// registered front-end is complete, its default profile is the `device:` a user would write for
+// that device in a config (README "Configuration"), and `navfuse sim` finds its formats, its
+// odometry protocol and its device-solution rates through the registry.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "apps/common/frontend_registry.hpp"
+#include "apps/simcmd/device_solution_model.hpp"
+
+namespace navfuse::apps {
+namespace {
+
+TEST(FrontendRegistry, EveryFrontendIsCompleteAndNamesItsDeviceProfile) {
+  // The devices of README "Configuration", by the INPUT prefix of DESIGN.md.
+  const std::map<std::string, std::string> device_of = {
+      {"fe", "fusionengine"}, {"mip", "cv7"}, {"vn", "vn300"}, {"unicore", "um220"}};
+  ASSERT_EQ(frontends_list().size(), device_of.size());
+  for (const frontends::FrontendInfo* f : frontends_list()) {
+    SCOPED_TRACE(std::string(f->format));
+    ASSERT_TRUE(device_of.contains(std::string(f->format)));
+    EXPECT_EQ(find_frontend(f->format), f);
+    EXPECT_NE(f->probe, nullptr);
+    EXPECT_NE(f->make_decoder, nullptr);
+    EXPECT_EQ(f->make_decoder()->format(), f->format);
+    EXPECT_EQ(std::optional(f->default_profile), config::device_profile_from_string(device_of.at(std::string(f->format))));
+    // A set-up sequence and its reply check come together.
+    EXPECT_EQ(f->setup_commands == nullptr, f->find_refusal == nullptr);
+  }
+}
+
+TEST(FrontendRegistry, SetUpIsSentToTheDevicesThatNeedIt) {
+  // VN-300, CV7 and UM220 must be told what to stream; a FusionEngine device streams poses and
+  // measurements by default (apps/run/device_setup.hpp).
+  for (const char* format : {"vn", "mip", "unicore"}) {
+    const frontends::FrontendInfo* f = find_frontend(format);
+    ASSERT_NE(f, nullptr);
+    ASSERT_NE(f->setup_commands, nullptr) << format;
+    EXPECT_FALSE(f->setup_commands().empty()) << format;
+  }
+  EXPECT_EQ(find_frontend("fe")->setup_commands, nullptr);
+}
+
+TEST(FrontendRegistry, SimFindsFormatsOdometryAndSolutionRates) {
+  std::vector<std::string> all;
+  for (const frontends::FrontendInfo* f : frontends_list()) all.emplace_back(f->format);
+  EXPECT_EQ(writable_formats(), all);  // every front-end can write its protocol
+  // Simulated odometry goes where a host sends it to a fusion device: FusionEngine's wheel and
+  // vehicle speed input messages.
+  ASSERT_NE(odometry_input_frontend(), nullptr);
+  EXPECT_EQ(odometry_input_frontend()->format, "fe");
+  // VN-300 and CV7 output their INS solution with the IMU; the UM220 at 5 Hz, FusionEngine 10 Hz.
+  EXPECT_EQ(device_error_class(*find_frontend("vn"), 400.0).rate_hz, 400.0);
+  EXPECT_EQ(device_error_class(*find_frontend("mip"), 100.0).rate_hz, 100.0);
+  EXPECT_EQ(device_error_class(*find_frontend("unicore"), 100.0).rate_hz, 5.0);
+  EXPECT_EQ(device_error_class(*find_frontend("fe"), 100.0).rate_hz, 10.0);
+}
+
+}  // namespace
+}  // namespace navfuse::apps
