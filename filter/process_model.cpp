@@ -1,6 +1,7 @@
 #include "filter/process_model.hpp"
 
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -38,7 +39,8 @@ StateVector process_noise_density(const FilterOptions& o) {
 
 namespace {
 
-[[noreturn]] void entry_out_of_bounds(int row, int col, int col_end, int count) {
+// Out of line and cold: the check stays a few compares in the covariance step's loops.
+[[noreturn, gnu::cold, gnu::noinline]] void entry_out_of_bounds(int row, int col, int col_end, int count) {
   throw std::logic_error("system matrix entry (" + std::to_string(row) + ", " + std::to_string(col) +
                          ") outside rows [0, " + std::to_string(sx::kDynamicCount) + ") x columns [0, " +
                          std::to_string(col_end) + ") or beyond " +
@@ -64,12 +66,14 @@ void discrete_step(Covariance& p, const SystemMatrix& f, const StateVector& q, d
   static_assert(N >= R, "the active block always holds position, velocity and attitude");
   using Cols = Eigen::Matrix<double, N, R>;
   using Block = Eigen::Matrix<double, N, N>;
-  // G = F T within the active block, and H, its leading R x R block.
+  // G = F T within the active block, and H, its leading R x R block. Subsets of f's entries,
+  // which push() checked as system_matrix built them: here only debug builds check again.
   SystemMatrix g, h;
   for (const SystemMatrix::Entry& e : f) {
     if (e.col >= N) continue;  // an inactive state
-    g.push(e.row, e.col, e.value * t, N);
-    if (e.col < R) h.push(e.row, e.col, e.value * t, R);
+    assert(e.row >= 0 && e.row < R && e.col >= 0 && g.count < SystemMatrix::kMaxEntries);
+    g.entries[static_cast<std::size_t>(g.count++)] = {e.row, e.col, e.value * t};
+    if (e.col < R) h.entries[static_cast<std::size_t>(h.count++)] = {e.row, e.col, e.value * t};
   }
   const Block pn = p.template topLeftCorner<N, N>();
 
@@ -98,9 +102,10 @@ void discrete_step(Covariance& p, const SystemMatrix& f, const StateVector& q, d
 }  // namespace
 
 void SystemMatrix::push(int row, int col, double value, int col_end) {
-  if (row < 0 || row >= sx::kDynamicCount || col < 0 || col >= col_end || count >= kMaxEntries) {
-    entry_out_of_bounds(row, col, col_end, count);
-  }
+  // One branch: negative indices wrap to large unsigned values.
+  const bool outside = (static_cast<unsigned>(row) >= static_cast<unsigned>(sx::kDynamicCount)) |
+                       (static_cast<unsigned>(col) >= static_cast<unsigned>(col_end)) | (count >= kMaxEntries);
+  if (outside) [[unlikely]] entry_out_of_bounds(row, col, col_end, count);
   entries[static_cast<std::size_t>(count++)] = {row, col, value};
 }
 
@@ -108,7 +113,8 @@ void SystemMatrix::add(int row, int col, double value) {
   if (value != 0.0) push(row, col, value);
 }
 
-void SystemMatrix::add_block(int row, int col, const Eigen::Matrix3d& block) {
+// Inlined into system_matrix: nine adds with constant offsets.
+[[gnu::always_inline]] inline void SystemMatrix::add_block(int row, int col, const Eigen::Matrix3d& block) {
   for (int c = 0; c < 3; ++c) {
     for (int r = 0; r < 3; ++r) add(row + r, col + c, block(r, c));
   }
