@@ -2,6 +2,8 @@
 
 #include <Eigen/Cholesky>
 
+#include "filter/active_dimension.hpp"
+
 namespace navfuse::filter {
 
 void Observation::keep_rows(unsigned mask) {
@@ -100,14 +102,7 @@ void joseph_update_rows(Covariance& p, const Observation& obs, double gate, Upda
 UpdateResult Ekf::update(const Observation& obs, double gate) {
   UpdateResult result;
   if (obs.rows() == 0) return result;
-  switch (n) {  // the possible active dimensions (StateSelection::active_dimension)
-    case sx::kCoreCount: joseph_update_rows<sx::kCoreCount>(p, obs, gate, result); break;
-    case sx::kWheelScale + 1: joseph_update_rows<sx::kWheelScale + 1>(p, obs, gate, result); break;
-    case sx::kMountYaw + 1: joseph_update_rows<sx::kMountYaw + 1>(p, obs, gate, result); break;
-    case sx::kLeverArm + 3: joseph_update_rows<sx::kLeverArm + 3>(p, obs, gate, result); break;
-    case sx::kGyroScale + 3: joseph_update_rows<sx::kGyroScale + 3>(p, obs, gate, result); break;
-    default: joseph_update_rows<sx::kCount>(p, obs, gate, result); break;
-  }
+  with_active_dimension(n, [&](auto dim) { joseph_update_rows<decltype(dim)::value>(p, obs, gate, result); });
   return result;
 }
 

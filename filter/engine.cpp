@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/rotation/rotation.hpp"
-#include "filter/input_checks.hpp"
+#include "filter/measurement_kinds.hpp"
 #include "filter/solution.hpp"
 
 namespace navfuse::filter {
@@ -16,11 +16,6 @@ constexpr double kMaxImuRate_hz = 1000.0;
 constexpr std::size_t kMaxEntries = 512;
 
 std::int64_t to_ns(double s) { return static_cast<std::int64_t>(std::llround(s * 1e9)); }
-
-bool is_ignored_kind(MeasurementKind k) {
-  return k == MeasurementKind::kDeviceSolution || k == MeasurementKind::kMagnetometer ||
-         k == MeasurementKind::kPressure || k == MeasurementKind::kWheelTicks;
-}
 
 }  // namespace
 
@@ -37,11 +32,12 @@ Engine::Engine(const FilterOptions& options)
 
 void Engine::process(const Measurement& m) {
   const MeasurementKind kind = kind_of(m);
-  if (is_ignored_kind(kind)) {
+  const MeasurementKindRow& row = kind_row(kind);
+  if (!row.fused) {
     ++stats_.of(kind).ignored;
     return;
   }
-  if (auto reason = check_input(m)) {
+  if (auto reason = row.check(m)) {
     ++stats_.of(kind).rejected[static_cast<std::size_t>(*reason)];
     return;
   }
@@ -82,7 +78,7 @@ void Engine::process_imu(const ImuSample& s) {
 }
 
 void Engine::run_increment(const ImuRecord& record) {
-  core_.propagate(options_, record.increment);
+  if (core_.propagate(options_, record.increment)) core_.apply_constraints(options_, record.increment);
   previous_horizon_ns_ = latest_horizon_ns_;
   latest_horizon_ns_ = record.horizon_ns;
   fuse_due(record.horizon_ns);

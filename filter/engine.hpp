@@ -20,7 +20,8 @@
 //   measurements (exact, not an approximation). Older ones are rejected ("too_late").
 // - Bad inputs (NaN/inf: "nan"; uncertainty <= 0 on a valid axis: "negative_std"; no valid axis
 //   or impossible values: "invalid") are rejected before they reach the state. Kinds the filter
-//   does not use (device solutions, magnetometer, pressure, wheel ticks) are counted as ignored.
+//   does not use (measurement_kinds.hpp: device solutions, magnetometer, pressure, wheel ticks)
+//   are counted as ignored.
 // - Modes follow MIP's filter states: Init -> Vertical Gyro (levelled while stationary) -> AHRS
 //   (heading from dual antenna, external heading or FilterOptions::initial_heading_rad) -> Full
 //   Navigation (position known; heading from GNSS course above 2 m/s if no other source) ->

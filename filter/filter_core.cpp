@@ -2,13 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <variant>
 
 #include "filter/alignment.hpp"
-#include "filter/control/external_aiding_control.hpp"
-#include "filter/control/gnss_control.hpp"
 #include "filter/control/odometry_control.hpp"
 #include "filter/control/stationary_control.hpp"
+#include "filter/measurement_kinds.hpp"
 #include "filter/mode_machine.hpp"
 
 namespace navfuse::filter {
@@ -65,12 +63,12 @@ void FilterCore::restart(const FilterOptions& o) {
   update_mode(*this, o);
 }
 
-void FilterCore::propagate(const FilterOptions& o, const ImuIncrement& raw) {
+bool FilterCore::propagate(const FilterOptions& o, const ImuIncrement& raw) {
   if (!mode.levelled) {
     x.time_ns = raw.time_ns;
     feed_leveller(*this, o, raw);
     update_mode(*this, o);
-    return;
+    return false;
   }
   const ImuIncrement comp = compensate(raw, x);
   rate_b_rps = comp.dtheta_rad / comp.dt_s;
@@ -91,7 +89,10 @@ void FilterCore::propagate(const FilterOptions& o, const ImuIncrement& raw) {
   if (x.time_ns / grid_ns != previous_ns / grid_ns || step.dt_s >= o.covariance_interval_s - 1e-9) {
     flush_covariance(o);
   }
+  return true;
+}
 
+void FilterCore::apply_constraints(const FilterOptions& o, const ImuIncrement& raw) {
   update_stationary(*this, o, raw);
   apply_nonholonomic(*this, o);
   update_mode(*this, o);
@@ -136,28 +137,8 @@ bool FilterCore::check_divergence(const FilterOptions& o) {
 
 FuseResult fuse_measurement(FilterCore& core, const FilterOptions& o, const Measurement& m,
                             double shift_s) {
-  const FuseResult r = std::visit(
-      [&](const auto& v) -> FuseResult {
-        using T = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<T, GnssPosition>) {
-          return fuse_gnss_position(core, o, v, shift_s);
-        } else if constexpr (std::is_same_v<T, GnssVelocity>) {
-          return fuse_gnss_velocity(core, o, v, shift_s);
-        } else if constexpr (std::is_same_v<T, GnssHeading>) {
-          return fuse_gnss_heading(core, o, v, shift_s);
-        } else if constexpr (std::is_same_v<T, WheelSpeeds> || std::is_same_v<T, VehicleSpeed>) {
-          return fuse_odometry(core, o, v, shift_s);
-        } else if constexpr (std::is_same_v<T, ExternalPosition>) {
-          return fuse_external_position(core, o, v, shift_s);
-        } else if constexpr (std::is_same_v<T, ExternalVelocity>) {
-          return fuse_external_velocity(core, o, v, shift_s);
-        } else if constexpr (std::is_same_v<T, ExternalHeading>) {
-          return fuse_external_heading(core, o, v, shift_s);
-        } else {
-          return FuseResult::reject(RejectReason::kInvalid);
-        }
-      },
-      m);
+  const FuseFunction fuse = kind_row(kind_of(m)).fuse;
+  const FuseResult r = fuse != nullptr ? fuse(core, o, m, shift_s) : FuseResult::reject(RejectReason::kInvalid);
   update_mode(core, o);
   return r;
 }

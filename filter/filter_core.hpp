@@ -115,8 +115,13 @@ struct FilterCore {
 
   // Back to Init with the configured priors (keeps modes reached and stats elsewhere).
   void restart(const FilterOptions& o);
-  // One IMU interval (raw increments in the vehicle frame).
-  void propagate(const FilterOptions& o, const ImuIncrement& raw);
+  // One IMU interval (raw increments in the vehicle frame): strapdown and covariance once
+  // levelled (true), the levelling accumulator before (false: nothing to constrain yet).
+  bool propagate(const FilterOptions& o, const ImuIncrement& raw);
+  // After each propagated interval: the stationary detector with ZUPT / ZARU, the non-holonomic
+  // constraint when due, then the mode and divergence checks. Apart from propagate() so that the
+  // pseudo-measurements are a step of their own, in this order, before any aiding at the sample.
+  void apply_constraints(const FilterOptions& o, const ImuIncrement& raw);
   // Brings the covariance up to the state time (before any update).
   void flush_covariance(const FilterOptions& o);
   // Gate, update, correct the nominal state. `gate` <= 0: no gate.

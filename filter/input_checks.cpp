@@ -1,7 +1,6 @@
 #include "filter/input_checks.hpp"
 
 #include <cmath>
-#include <variant>
 
 namespace navfuse::filter {
 namespace {
@@ -27,7 +26,9 @@ Reason check_cov(const Eigen::Matrix3d& cov, int rows) {
   return std::nullopt;
 }
 
-Reason check(const ImuSample& m) {
+}  // namespace
+
+Reason check_input(const ImuSample& m) {
   if (!finite(m.gyro) || !finite(m.accel) || !finite(m.dt_s)) return RejectReason::kNan;
   if (m.dt_s < 0.0) return RejectReason::kInvalid;
   const std::uint32_t both = ImuSample::kValidGyro | ImuSample::kValidAccel;
@@ -35,7 +36,7 @@ Reason check(const ImuSample& m) {
   return std::nullopt;
 }
 
-Reason check(const GnssPosition& m) {
+Reason check_input(const GnssPosition& m) {
   if (!finite(m.lat_rad) || !finite(m.lon_rad) || !finite(m.height_m) || !finite(m.cov_ned_m2)) {
     return RejectReason::kNan;
   }
@@ -46,13 +47,13 @@ Reason check(const GnssPosition& m) {
   return std::nullopt;
 }
 
-Reason check(const GnssVelocity& m) {
+Reason check_input(const GnssVelocity& m) {
   if (!finite(m.vel_ned_mps) || !finite(m.cov_ned_m2ps2)) return RejectReason::kNan;
   if ((m.header.valid & GnssVelocity::kValidCovariance) != 0) return check_cov(m.cov_ned_m2ps2, 3);
   return std::nullopt;
 }
 
-Reason check(const GnssHeading& m) {
+Reason check_input(const GnssHeading& m) {
   if (!finite(m.heading_rad) || !finite(m.heading_std_rad)) return RejectReason::kNan;
   if ((m.header.valid & GnssHeading::kValidHeading) != 0 && !(m.heading_std_rad > 0.0)) {
     return RejectReason::kNegativeStd;
@@ -60,7 +61,7 @@ Reason check(const GnssHeading& m) {
   return std::nullopt;
 }
 
-Reason check(const WheelSpeeds& m) {
+Reason check_input(const WheelSpeeds& m) {
   for (double v : m.speed_mps) {
     if (!finite(v)) return RejectReason::kNan;
   }
@@ -69,23 +70,23 @@ Reason check(const WheelSpeeds& m) {
   return std::nullopt;
 }
 
-Reason check(const VehicleSpeed& m) {
+Reason check_input(const VehicleSpeed& m) {
   if (!finite(m.speed_mps) || !finite(m.speed_std_mps)) return RejectReason::kNan;
   if (m.speed_std_mps < 0.0) return RejectReason::kNegativeStd;
   return std::nullopt;
 }
 
-Reason check(const ExternalPosition& m) {
+Reason check_input(const ExternalPosition& m) {
   if (!finite(m.value) || !finite(m.std_m) || !finite(m.lever_arm_m)) return RejectReason::kNan;
   return check_std(m.std_m, m.header.valid);
 }
 
-Reason check(const ExternalVelocity& m) {
+Reason check_input(const ExternalVelocity& m) {
   if (!finite(m.value_mps) || !finite(m.std_mps) || !finite(m.lever_arm_m)) return RejectReason::kNan;
   return check_std(m.std_mps, m.header.valid);
 }
 
-Reason check(const ExternalHeading& m) {
+Reason check_input(const ExternalHeading& m) {
   if (!finite(m.heading_rad) || !finite(m.std_rad)) return RejectReason::kNan;
   if ((m.header.valid & ExternalHeading::kValidHeading) != 0 && !(m.std_rad > 0.0)) {
     return RejectReason::kNegativeStd;
@@ -93,13 +94,5 @@ Reason check(const ExternalHeading& m) {
   return std::nullopt;
 }
 
-template <class T>
-Reason check(const T&) { return std::nullopt; }
-
-}  // namespace
-
-std::optional<RejectReason> check_input(const Measurement& m) {
-  return std::visit([](const auto& v) { return check(v); }, m);
-}
 
 }  // namespace navfuse::filter

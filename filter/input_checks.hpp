@@ -9,6 +9,15 @@
 
 namespace navfuse::filter {
 
-std::optional<RejectReason> check_input(const Measurement& m);
+// One overload per kind the filter fuses (filter/measurement_kinds.hpp maps kinds to them).
+std::optional<RejectReason> check_input(const ImuSample& m);
+std::optional<RejectReason> check_input(const GnssPosition& m);
+std::optional<RejectReason> check_input(const GnssVelocity& m);
+std::optional<RejectReason> check_input(const GnssHeading& m);
+std::optional<RejectReason> check_input(const WheelSpeeds& m);
+std::optional<RejectReason> check_input(const VehicleSpeed& m);
+std::optional<RejectReason> check_input(const ExternalPosition& m);
+std::optional<RejectReason> check_input(const ExternalVelocity& m);
+std::optional<RejectReason> check_input(const ExternalHeading& m);
 
 }  // namespace navfuse::filter

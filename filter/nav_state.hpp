@@ -34,4 +34,10 @@ struct NavState {
 // Position errors are NED metres, converted with the radii of curvature (Groves eq. 2.111).
 void inject_error(NavState& x, const StateVector& dx);
 
+// The error of `estimate` relative to `truth` in the same convention, so that
+// inject_error(estimate, state_difference(estimate, truth)) gives `truth` (to rounding): NED
+// metres at the estimate's position, phi with C_truth = exp([phi x]) C_estimate. Exact for any
+// size of difference (not only small ones); used to linearise the strapdown numerically.
+StateVector state_difference(const NavState& estimate, const NavState& truth);
+
 }  // namespace navfuse::filter

@@ -1,9 +1,13 @@
 #include "filter/process_model.hpp"
 
 #include <array>
+#include <cassert>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "core/rotation/rotation.hpp"
+#include "filter/active_dimension.hpp"
 
 namespace navfuse::filter {
 
@@ -35,11 +39,14 @@ StateVector process_noise_density(const FilterOptions& o) {
 
 namespace {
 
-// Non-zero entries of G = F T, or of its leading R x R block H, within the active states.
-struct ScaledEntries {
-  int count = 0;
-  std::array<SystemMatrix::Entry, SystemMatrix::kMaxEntries> e;
-};
+// Out of line and cold: the check stays a few compares in the covariance step's loops.
+[[noreturn, gnu::cold, gnu::noinline]] void entry_out_of_bounds(int row, int col, int col_end, int count) {
+  throw std::logic_error("system matrix entry (" + std::to_string(row) + ", " + std::to_string(col) +
+                         ") outside rows [0, " + std::to_string(sx::kDynamicCount) + ") x columns [0, " +
+                         std::to_string(col_end) + ") or beyond " +
+                         std::to_string(SystemMatrix::kMaxEntries) + " entries (" +
+                         std::to_string(count) + " held)");
+}
 
 // P <- Phi P Phi^T + Q_d on the leading N x N block.
 //
@@ -59,28 +66,30 @@ void discrete_step(Covariance& p, const SystemMatrix& f, const StateVector& q, d
   static_assert(N >= R, "the active block always holds position, velocity and attitude");
   using Cols = Eigen::Matrix<double, N, R>;
   using Block = Eigen::Matrix<double, N, N>;
-  ScaledEntries g, h;
-  for (int i = 0; i < f.count; ++i) {
-    const SystemMatrix::Entry& e = f.entries[i];
+  // G = F T within the active block, and H, its leading R x R block. Subsets of f's entries,
+  // which push() checked as system_matrix built them: here only debug builds check again.
+  SystemMatrix g, h;
+  for (const SystemMatrix::Entry& e : f) {
     if (e.col >= N) continue;  // an inactive state
-    g.e[g.count++] = {e.row, e.col, e.value * t};
-    if (e.col < R) h.e[h.count++] = {e.row, e.col, e.value * t};
+    assert(e.row >= 0 && e.row < R && e.col >= 0 && g.count < SystemMatrix::kMaxEntries);
+    g.entries[static_cast<std::size_t>(g.count++)] = {e.row, e.col, e.value * t};
+    if (e.col < R) h.entries[static_cast<std::size_t>(h.count++)] = {e.row, e.col, e.value * t};
   }
   const Block pn = p.template topLeftCorner<N, N>();
 
   // W = P G^T: column i gathers G(i, k) P.col(k).
   Cols w = Cols::Zero();
-  for (int i = 0; i < g.count; ++i) w.col(g.e[i].row) += g.e[i].value * pn.col(g.e[i].col);
+  for (const SystemMatrix::Entry& e : g) w.col(e.row) += e.value * pn.col(e.col);
   // P A^T = W + W H^T / 2.
   Cols pat = w;
-  for (int i = 0; i < h.count; ++i) pat.col(h.e[i].row) += (0.5 * h.e[i].value) * w.col(h.e[i].col);
+  for (const SystemMatrix::Entry& e : h) pat.col(e.row) += (0.5 * e.value) * w.col(e.col);
   // Y = G (P A^T), then A P A^T = Y + H Y / 2.
   Eigen::Matrix<double, R, R> y = Eigen::Matrix<double, R, R>::Zero();
-  for (int i = 0; i < g.count; ++i) y.row(g.e[i].row) += g.e[i].value * pat.row(g.e[i].col);
+  for (const SystemMatrix::Entry& e : g) y.row(e.row) += e.value * pat.row(e.col);
   Eigen::Matrix<double, R, R> apat = y;
-  for (int i = 0; i < h.count; ++i) apat.row(h.e[i].row) += (0.5 * h.e[i].value) * y.row(h.e[i].col);
+  for (const SystemMatrix::Entry& e : h) apat.row(e.row) += (0.5 * e.value) * y.row(e.col);
   // Q F^T T^2 / 2 (N x R): entry (k, i) = q_k G(i, k) T / 2.
-  for (int i = 0; i < g.count; ++i) pat(g.e[i].col, g.e[i].row) += q(g.e[i].col) * g.e[i].value * (0.5 * t);
+  for (const SystemMatrix::Entry& e : g) pat(e.col, e.row) += q(e.col) * e.value * (0.5 * t);
 
   Block next = pn;
   next.template leftCols<R>() += pat;
@@ -92,11 +101,20 @@ void discrete_step(Covariance& p, const SystemMatrix& f, const StateVector& q, d
 
 }  // namespace
 
-void SystemMatrix::add(int row, int col, double value) {
-  if (value != 0.0) entries[count++] = {row, col, value};
+void SystemMatrix::push(int row, int col, double value, int col_end) {
+  // One branch: negative indices wrap to large unsigned values.
+  const bool outside = (static_cast<unsigned>(row) >= static_cast<unsigned>(sx::kDynamicCount)) |
+                       (static_cast<unsigned>(col) >= static_cast<unsigned>(col_end)) | (count >= kMaxEntries);
+  if (outside) [[unlikely]] entry_out_of_bounds(row, col, col_end, count);
+  entries[static_cast<std::size_t>(count++)] = {row, col, value};
 }
 
-void SystemMatrix::add_block(int row, int col, const Eigen::Matrix3d& block) {
+void SystemMatrix::add(int row, int col, double value) {
+  if (value != 0.0) push(row, col, value);
+}
+
+// Inlined into system_matrix: nine adds with constant offsets.
+[[gnu::always_inline]] inline void SystemMatrix::add_block(int row, int col, const Eigen::Matrix3d& block) {
   for (int c = 0; c < 3; ++c) {
     for (int r = 0; r < 3; ++r) add(row + r, col + c, block(r, c));
   }
@@ -104,7 +122,7 @@ void SystemMatrix::add_block(int row, int col, const Eigen::Matrix3d& block) {
 
 SystemRows SystemMatrix::dense() const {
   SystemRows f = SystemRows::Zero();
-  for (int i = 0; i < count; ++i) f(entries[i].row, entries[i].col) += entries[i].value;
+  for (const Entry& e : *this) f(e.row, e.col) += e.value;
   return f;
 }
 
@@ -154,14 +172,7 @@ void propagate_covariance(Covariance& p, int n, const NavState& x, const LocalEa
   const double t = step.dt_s;
   if (t <= 0.0) return;
   const SystemMatrix f = system_matrix(x, earth, step);
-  switch (n) {  // the possible active dimensions (StateSelection::active_dimension)
-    case sx::kCoreCount: return discrete_step<sx::kCoreCount>(p, f, q, t);
-    case sx::kWheelScale + 1: return discrete_step<sx::kWheelScale + 1>(p, f, q, t);
-    case sx::kMountYaw + 1: return discrete_step<sx::kMountYaw + 1>(p, f, q, t);
-    case sx::kLeverArm + 3: return discrete_step<sx::kLeverArm + 3>(p, f, q, t);
-    case sx::kGyroScale + 3: return discrete_step<sx::kGyroScale + 3>(p, f, q, t);
-    default: return discrete_step<sx::kCount>(p, f, q, t);
-  }
+  with_active_dimension(n, [&](auto dim) { discrete_step<decltype(dim)::value>(p, f, q, t); });
 }
 
 }  // namespace navfuse::filter

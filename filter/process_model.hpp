@@ -15,6 +15,7 @@
 
 #include "filter/filter_options.hpp"
 #include "filter/nav_state.hpp"
+#include "filter/neglected_term.hpp"
 #include "filter/state_layout.hpp"
 #include "filter/strapdown.hpp"
 
@@ -37,7 +38,7 @@ struct ProcessAccumulator {
 StateVector process_noise_density(const FilterOptions& options);
 
 // The continuous-time system matrix F at state `x` for the step's mean specific force and
-// angular rate, as the list of its non-zero entries (about 60 of 27 x 27; all in rows
+// angular rate, as the list of its non-zero entries (about 70 of 27 x 27; all in rows
 // [0, sx::kDynamicCount)), which is what the covariance step multiplies with.
 using SystemRows = Eigen::Matrix<double, sx::kDynamicCount, sx::kCount>;
 struct SystemMatrix {
@@ -50,11 +51,34 @@ struct SystemMatrix {
   std::array<Entry, kMaxEntries> entries;
   int count = 0;
 
-  void add(int row, int col, double value);  // exact zeros are not stored
+  // Appends an entry. One outside rows [0, sx::kDynamicCount) x columns [0, col_end), or beyond
+  // kMaxEntries, is a bug in whoever builds the list (the covariance step indexes fixed-size
+  // blocks with it): std::logic_error, in every build type.
+  void push(int row, int col, double value, int col_end = sx::kCount);
+  void add(int row, int col, double value);  // push(), except that exact zeros are not stored
   void add_block(int row, int col, const Eigen::Matrix3d& block);
   SystemRows dense() const;  // rows [0, sx::kDynamicCount) of F
+  const Entry* begin() const { return entries.data(); }
+  const Entry* end() const { return entries.data() + count; }
 };
 SystemMatrix system_matrix(const NavState& x, const LocalEarth& earth, const ProcessAccumulator& step);
+
+// Terms of F left out on purpose, in units of F (per second, per second squared): all are
+// below the process noise over a step by orders of magnitude at MEMS grade. F is also evaluated
+// at the start of the step, C_nb and the mean f and w held over it, and takes the compensation's
+// 1 / (1 + s) as 1 (relative errors of |w| T and |s|, a few 1e-3 of each entry).
+inline constexpr std::array<NeglectedTerm, 4> kSystemMatrixNeglected{{
+    {sx::kPos, 3, sx::kPos, 3, 1e-5,
+     "curvature terms of the NED position error, O(|v| / R): <= 1e-5 /s for |v| <= 60 m/s"},
+    {sx::kVel, 3, sx::kVel, 3, 2e-5,
+     "transport rate's change with velocity in the Coriolis term, O(|v| / R): <= 2e-5 /s for "
+     "|v| <= 60 m/s"},
+    {sx::kVel, 2, sx::kPos, 3, 3e-8,
+     "horizontal: gravity's and the earth rate's change with position, ~1e-8 /s^2 per m"},
+    {sx::kVel + 2, 1, sx::kPos, 3, 3e-8,
+     "vertical: gravity's change with latitude, and the free-air gradient taken as 2 g / R "
+     "(0.4 % below the normal-gravity one, 1.2e-8 /s^2)"},
+}};
 
 // P <- Phi P Phi^T + Q_d over the accumulated step (a no-op for an empty step).
 void propagate_covariance(Covariance& p, int active_dimension, const NavState& x,

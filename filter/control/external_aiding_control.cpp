@@ -6,7 +6,7 @@
 
 namespace navfuse::filter {
 
-FuseResult fuse_external_position(FilterCore& c, const FilterOptions& o, const ExternalPosition& m,
+FuseResult fuse(FilterCore& c, const FilterOptions& o, const ExternalPosition& m,
                                   double shift_s) {
   if ((m.header.valid & 0b111u) == 0) return FuseResult::reject(RejectReason::kInvalid);
   if (!c.mode.levelled) return FuseResult::reject(RejectReason::kNotAligned);
@@ -35,7 +35,7 @@ FuseResult fuse_external_position(FilterCore& c, const FilterOptions& o, const E
   return r;
 }
 
-FuseResult fuse_external_velocity(FilterCore& c, const FilterOptions& o, const ExternalVelocity& m,
+FuseResult fuse(FilterCore& c, const FilterOptions& o, const ExternalVelocity& m,
                                   double shift_s) {
   if ((m.header.valid & 0b111u) == 0) return FuseResult::reject(RejectReason::kInvalid);
   if (!c.mode.levelled || !c.mode.heading_known) return FuseResult::reject(RejectReason::kNotAligned);
@@ -43,7 +43,7 @@ FuseResult fuse_external_velocity(FilterCore& c, const FilterOptions& o, const E
   return c.apply(o, obs, c.gate_for(o, obs.rows()));
 }
 
-FuseResult fuse_external_heading(FilterCore& c, const FilterOptions& o, const ExternalHeading& m,
+FuseResult fuse(FilterCore& c, const FilterOptions& o, const ExternalHeading& m,
                                  double shift_s) {
   if ((m.header.valid & ExternalHeading::kValidHeading) == 0) return FuseResult::reject(RejectReason::kInvalid);
   if (!c.mode.levelled) return FuseResult::reject(RejectReason::kNotAligned);

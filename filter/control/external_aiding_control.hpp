@@ -8,8 +8,8 @@
 
 namespace navfuse::filter {
 
-FuseResult fuse_external_position(FilterCore& core, const FilterOptions& o, const ExternalPosition& m, double shift_s);
-FuseResult fuse_external_velocity(FilterCore& core, const FilterOptions& o, const ExternalVelocity& m, double shift_s);
-FuseResult fuse_external_heading(FilterCore& core, const FilterOptions& o, const ExternalHeading& m, double shift_s);
+FuseResult fuse(FilterCore& core, const FilterOptions& o, const ExternalPosition& m, double shift_s);
+FuseResult fuse(FilterCore& core, const FilterOptions& o, const ExternalVelocity& m, double shift_s);
+FuseResult fuse(FilterCore& core, const FilterOptions& o, const ExternalHeading& m, double shift_s);
 
 }  // namespace navfuse::filter

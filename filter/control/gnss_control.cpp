@@ -28,7 +28,7 @@ bool sustained_rejection(std::int64_t now, std::int64_t& reject_since, std::int6
 
 }  // namespace
 
-FuseResult fuse_gnss_position(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
+FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
                               double shift_s) {
   if (!has_position_fix(m.fix)) return FuseResult::reject(RejectReason::kNoFix);
   if ((m.header.valid & GnssPosition::kValidPosition) == 0) return FuseResult::reject(RejectReason::kInvalid);
@@ -70,7 +70,7 @@ FuseResult fuse_gnss_position(FilterCore& c, const FilterOptions& o, const GnssP
   return r;
 }
 
-FuseResult fuse_gnss_velocity(FilterCore& c, const FilterOptions& o, const GnssVelocity& m,
+FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssVelocity& m,
                               double shift_s) {
   if (!has_position_fix(m.fix)) return FuseResult::reject(RejectReason::kNoFix);
   if ((m.header.valid & GnssVelocity::kValidVelocity) == 0) return FuseResult::reject(RejectReason::kInvalid);
@@ -126,7 +126,7 @@ FuseResult fuse_gnss_velocity(FilterCore& c, const FilterOptions& o, const GnssV
   return r;
 }
 
-FuseResult fuse_gnss_heading(FilterCore& c, const FilterOptions& o, const GnssHeading& m,
+FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssHeading& m,
                              double shift_s) {
   if ((m.header.valid & GnssHeading::kValidHeading) == 0) return FuseResult::reject(RejectReason::kInvalid);
   if (!c.mode.levelled) return FuseResult::reject(RejectReason::kNotAligned);

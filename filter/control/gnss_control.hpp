@@ -10,11 +10,11 @@
 
 namespace navfuse::filter {
 
-FuseResult fuse_gnss_position(FilterCore& core, const FilterOptions& o, const GnssPosition& m,
+FuseResult fuse(FilterCore& core, const FilterOptions& o, const GnssPosition& m,
                               double shift_s);
-FuseResult fuse_gnss_velocity(FilterCore& core, const FilterOptions& o, const GnssVelocity& m,
+FuseResult fuse(FilterCore& core, const FilterOptions& o, const GnssVelocity& m,
                               double shift_s);
-FuseResult fuse_gnss_heading(FilterCore& core, const FilterOptions& o, const GnssHeading& m,
+FuseResult fuse(FilterCore& core, const FilterOptions& o, const GnssHeading& m,
                              double shift_s);
 
 }  // namespace navfuse::filter

@@ -21,11 +21,11 @@ FuseResult fuse_speed(FilterCore& c, const FilterOptions& o, const std::optional
 
 }  // namespace
 
-FuseResult fuse_odometry(FilterCore& c, const FilterOptions& o, const WheelSpeeds& m, double shift_s) {
+FuseResult fuse(FilterCore& c, const FilterOptions& o, const WheelSpeeds& m, double shift_s) {
   return fuse_speed(c, o, speed_from_wheels(m, o.wheel_speed_std_mps), m.header.time_ns, shift_s);
 }
 
-FuseResult fuse_odometry(FilterCore& c, const FilterOptions& o, const VehicleSpeed& m, double shift_s) {
+FuseResult fuse(FilterCore& c, const FilterOptions& o, const VehicleSpeed& m, double shift_s) {
   return fuse_speed(c, o, speed_from_vehicle(m, o.wheel_speed_std_mps), m.header.time_ns, shift_s);
 }
 

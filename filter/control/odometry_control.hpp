@@ -9,8 +9,8 @@
 
 namespace navfuse::filter {
 
-FuseResult fuse_odometry(FilterCore& core, const FilterOptions& o, const WheelSpeeds& m, double shift_s);
-FuseResult fuse_odometry(FilterCore& core, const FilterOptions& o, const VehicleSpeed& m, double shift_s);
+FuseResult fuse(FilterCore& core, const FilterOptions& o, const WheelSpeeds& m, double shift_s);
+FuseResult fuse(FilterCore& core, const FilterOptions& o, const VehicleSpeed& m, double shift_s);
 
 // Called every IMU sample; fuses the constraint when it is due.
 void apply_nonholonomic(FilterCore& core, const FilterOptions& o);

@@ -1,7 +1,5 @@
 #include "filter/measurements/gnss_position.hpp"
 
-#include "core/rotation/rotation.hpp"
-
 namespace navfuse::filter {
 
 Eigen::Vector3d default_gnss_position_std_m(GnssFixType fix) {
@@ -15,15 +13,12 @@ Eigen::Vector3d default_gnss_position_std_m(GnssFixType fix) {
   }
 }
 
+PointPrediction gnss_position_prediction(const StateView& s) { return point_at(s, s.x.gnss_lever_arm_m); }
+
 Observation gnss_position_observation(const StateView& s, const GnssPosition& m) {
   Observation obs(3);
-  const Eigen::Vector3d lever_n = s.c_nb * s.x.gnss_lever_arm_m;
-  // Predicted antenna position at the measurement time (the state is at most one IMU interval
-  // away, so a constant-velocity shift is exact to the millimetre).
-  obs.residual = position_difference_ned_m(s, m.lat_rad, m.lon_rad, m.height_m) + lever_n +
-                 s.x.vel_ned_mps * s.shift_s;
-  obs.h.block<3, 3>(0, sx::kPos).setIdentity();
-  obs.h.block<3, 3>(0, sx::kAtt) = rot::skew(lever_n);  // C_hat l - C l = [(C l) x] phi
+  obs.residual = point_minus_llh_ned_m(s, gnss_position_prediction(s), m.lat_rad, m.lon_rad, m.height_m);
+  point_jacobian(s, s.x.gnss_lever_arm_m, obs);
   obs.h.block<3, 3>(0, sx::kLeverArm) = s.c_nb;
   if ((m.header.valid & GnssPosition::kValidCovariance) != 0) {
     obs.r = m.cov_ned_m2;

@@ -9,6 +9,8 @@ namespace navfuse::filter {
 // 1-sigma position noise assumed when a fix reports no covariance (typical receiver figures).
 Eigen::Vector3d default_gnss_position_std_m(GnssFixType fix);
 
+// h(x): the antenna position.
+PointPrediction gnss_position_prediction(const StateView& s);
 // Rows north, east (and down when the height is valid).
 Observation gnss_position_observation(const StateView& s, const GnssPosition& m);
 

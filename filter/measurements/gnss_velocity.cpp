@@ -4,13 +4,16 @@
 
 namespace navfuse::filter {
 
+Eigen::Vector3d antenna_velocity_ned_mps(const StateView& s, const Eigen::Vector3d& l) {
+  return s.x.vel_ned_mps + s.c_nb * s.rate_b_rps.cross(l) - s.earth.earth_rate_ned_rps.cross(s.c_nb * l);
+}
+
 Observation antenna_velocity_observation(const StateView& s, const Eigen::Vector3d& l,
                                          const Eigen::Vector3d& measured, bool lever_arm_is_state) {
   Observation obs(3);
-  const Eigen::Vector3d rot_n = s.c_nb * s.rate_b_rps.cross(l);
-  obs.residual = s.x.vel_ned_mps + rot_n - s.earth.earth_rate_ned_rps.cross(s.c_nb * l) - measured;
+  obs.residual = antenna_velocity_ned_mps(s, l) - measured;
   obs.h.block<3, 3>(0, sx::kVel).setIdentity();
-  obs.h.block<3, 3>(0, sx::kAtt) = rot::skew(rot_n);
+  obs.h.block<3, 3>(0, sx::kAtt) = rot::skew(s.c_nb * s.rate_b_rps.cross(l));
   // w_hat = w - d b_g: C (-(d b_g) x l) = C [l x] d b_g.
   obs.h.block<3, 3>(0, sx::kGyroBias) = s.c_nb * rot::skew(l);
   if (lever_arm_is_state) obs.h.block<3, 3>(0, sx::kLeverArm) = s.c_nb * rot::skew(s.rate_b_rps);

@@ -2,17 +2,34 @@
 
 #include <cmath>
 
+#include "core/geodesy/geodesy.hpp"
 #include "core/rotation/rotation.hpp"
 
 namespace navfuse::filter {
 
-Eigen::Vector3d position_difference_ned_m(const StateView& s, double lat_rad, double lon_rad,
-                                          double height_m) {
-  const double h = s.x.height_m;
-  return {(s.x.lat_rad - lat_rad) * (s.earth.radii.meridian_m + h),
-          rot::wrap_pi(s.x.lon_rad - lon_rad) * (s.earth.radii.prime_vertical_m + h) *
-              std::cos(s.x.lat_rad),
-          -(h - height_m)};
+PointPrediction point_at(const StateView& s, const Eigen::Vector3d& lever_arm_m) {
+  // Predicted position at the measurement time (the state is at most one IMU interval away, so a
+  // constant-velocity shift is exact to the millimetre).
+  return {s.x.lat_rad, s.x.lon_rad, s.x.height_m, s.c_nb * lever_arm_m + s.x.vel_ned_mps * s.shift_s};
+}
+
+Eigen::Vector3d point_minus_llh_ned_m(const StateView& s, const PointPrediction& p, double lat_rad,
+                                      double lon_rad, double height_m) {
+  const double h = p.height_m;
+  const Eigen::Vector3d origin_minus_z(
+      (p.lat_rad - lat_rad) * (s.earth.radii.meridian_m + h),
+      rot::wrap_pi(p.lon_rad - lon_rad) * (s.earth.radii.prime_vertical_m + h) * std::cos(p.lat_rad),
+      -(h - height_m));
+  return origin_minus_z + p.offset_ned_m;
+}
+
+Eigen::Vector3d point_ecef_m(const PointPrediction& p) {
+  return geo::ecef_from_llh(geo::llh_offset(geo::Llh{p.lat_rad, p.lon_rad, p.height_m}, p.offset_ned_m));
+}
+
+void point_jacobian(const StateView& s, const Eigen::Vector3d& lever_arm_m, Observation& obs) {
+  obs.h.block<3, 3>(0, sx::kPos).setIdentity();
+  obs.h.block<3, 3>(0, sx::kAtt) = rot::skew(s.c_nb * lever_arm_m);
 }
 
 AzimuthModel azimuth_of(const StateView& s, const Eigen::Vector3d& direction_b) {

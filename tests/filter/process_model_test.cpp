@@ -3,10 +3,12 @@
 // with plain full-size matrix products. The filter's version works on the non-zero rows of F
 // only; both must agree to rounding.
 #include <random>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
 #include "core/rotation/rotation.hpp"
+#include "filter/active_dimension.hpp"
 #include "filter/process_model.hpp"
 
 namespace navfuse::filter {
@@ -71,8 +73,7 @@ TEST(ProcessModel, SparseStepMatchesDenseFormForEveryActiveDimension) {
   StateVector q;
   for (int i = 0; i < sx::kCount; ++i) q(i) = 1e-6 * (1 + i);
   const SystemRows f = system_matrix(x, earth, step).dense();
-  for (int n : {sx::kCoreCount, sx::kWheelScale + 1, sx::kMountYaw + 1, sx::kLeverArm + 3, sx::kGyroScale + 3,
-                sx::kCount}) {
+  for (int n : kActiveDimensions) {
     SCOPED_TRACE(n);
     const Covariance p0 = random_covariance(n, rng);
     Covariance p = p0;
@@ -81,6 +82,47 @@ TEST(ProcessModel, SparseStepMatchesDenseFormForEveryActiveDimension) {
     EXPECT_LT((p - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
     EXPECT_EQ((p - p.transpose()).cwiseAbs().maxCoeff(), 0.0);
   }
+}
+
+// Every state selection's active dimension has a compiled kernel (with_active_dimension falls
+// back to the full set for any other n, which would be correct but slow).
+TEST(ProcessModel, EveryStateSelectionHasAFixedSizeKernel) {
+  for (unsigned bits = 0; bits < 32; ++bits) {
+    StateSelection s;
+    s.wheel_scale = (bits & 1u) != 0;
+    s.mounting = (bits & 2u) != 0;
+    s.gnss_lever_arm = (bits & 4u) != 0;
+    s.gyro_scale = (bits & 8u) != 0;
+    s.accel_scale = (bits & 16u) != 0;
+    const int n = s.active_dimension();
+    int dispatched = 0;
+    with_active_dimension(n, [&](auto dim) { dispatched = decltype(dim)::value; });
+    EXPECT_EQ(dispatched, n) << "selection bits " << bits;
+  }
+}
+
+// The sparse F list refuses entries the covariance step could not index: a row without
+// dynamics, a column outside the block it is built for, or more entries than it holds.
+TEST(ProcessModel, SystemMatrixEntriesAreBoundsChecked) {
+  SystemMatrix f;
+  EXPECT_THROW(f.push(sx::kDynamicCount, 0, 1.0), std::logic_error);
+  EXPECT_THROW(f.push(-1, 0, 1.0), std::logic_error);
+  EXPECT_THROW(f.push(0, sx::kCount, 1.0), std::logic_error);
+  EXPECT_THROW(f.push(0, sx::kCoreCount, 1.0, sx::kCoreCount), std::logic_error);
+  EXPECT_EQ(f.count, 0);
+  for (int i = 0; i < SystemMatrix::kMaxEntries; ++i) f.push(i % sx::kDynamicCount, i % sx::kCount, 1.0);
+  EXPECT_THROW(f.push(0, 0, 1.0), std::logic_error);
+  EXPECT_EQ(f.count, SystemMatrix::kMaxEntries);
+  // What system_matrix builds fits, with room to spare.
+  NavState x;
+  x.lat_rad = 0.5;
+  x.vel_ned_mps = {10.0, 5.0, 1.0};
+  x.q_nb = rot::quat_from_rpy({0.1, 0.2, 0.3});
+  ProcessAccumulator step;
+  step.dt_s = 0.01;
+  step.dtheta_rad = {0.001, 0.002, 0.003};
+  step.dvel_mps = {0.01, 0.02, -0.098};
+  EXPECT_LE(system_matrix(x, LocalEarth::at(x.lat_rad, 0.0), step).count, SystemMatrix::kMaxEntries);
 }
 
 }  // namespace

@@ -1,0 +1,61 @@
+// The per-kind table (filter/measurement_kinds.hpp): complete by construction, and the Engine
+// follows it.
+#include <gtest/gtest.h>
+
+#include "filter/engine.hpp"
+#include "filter/measurement_kinds.hpp"
+
+namespace navfuse::filter {
+namespace {
+
+// The mechanism that makes a new MeasurementKind without a row fail to compile: the table is
+// sized by kCount, so a forgotten row is value-initialised (kind kImu at its index) and
+// covers_every_kind, static_assert-ed in the header, is false.
+constexpr MeasurementKindTable missing_last_row() {
+  MeasurementKindTable t{};
+  for (std::size_t i = 0; i + 1 < kKindCount; ++i) t[i] = kMeasurementKinds[i];
+  return t;
+}
+static_assert(!covers_every_kind(missing_last_row()), "a table without the last kind's row is rejected");
+static_assert(!covers_every_kind(std::array<MeasurementKindRow, kKindCount - 1>{}),
+              "a table one row short is rejected");
+constexpr MeasurementKindTable fused_without_check() {
+  MeasurementKindTable t = kMeasurementKinds;
+  t[static_cast<std::size_t>(MeasurementKind::kGnssPosition)].check = nullptr;
+  return t;
+}
+static_assert(!covers_every_kind(fused_without_check()), "a fused kind needs its input check");
+
+TEST(MeasurementKinds, FusedKindsAreTheOnesTheFilterHasModelsFor) {
+  // DESIGN.md: device solutions are for comparison; the filter has no magnetometer, baro or
+  // tick-count model (issue 13: wheel ticks are "not fused" until it has one).
+  for (MeasurementKind k : {MeasurementKind::kWheelTicks, MeasurementKind::kDeviceSolution,
+                            MeasurementKind::kMagnetometer, MeasurementKind::kPressure, MeasurementKind::kCount}) {
+    EXPECT_FALSE(is_fused(k)) << to_string(k);
+  }
+  for (MeasurementKind k : {MeasurementKind::kImu, MeasurementKind::kGnssPosition, MeasurementKind::kGnssVelocity,
+                            MeasurementKind::kGnssHeading, MeasurementKind::kWheelSpeed,
+                            MeasurementKind::kVehicleSpeed, MeasurementKind::kExternalPosition,
+                            MeasurementKind::kExternalVelocity, MeasurementKind::kExternalHeading}) {
+    EXPECT_TRUE(is_fused(k)) << to_string(k);
+  }
+  EXPECT_EQ(kind_row(MeasurementKind::kGnssHeading).name(), "gnss_heading");
+}
+
+TEST(MeasurementKinds, EngineCountsUnfusedKindsAsIgnoredAndChecksFusedOnes) {
+  Engine engine{FilterOptions{}};
+  engine.process(Measurement{WheelTicks{}});
+  engine.process(Measurement{Pressure{}});
+  GnssVelocity bad;
+  bad.header.valid = GnssVelocity::kValidVelocity;
+  bad.vel_ned_mps.x() = std::nan("");
+  engine.process(Measurement{bad});
+  const FilterStats& st = engine.stats();
+  EXPECT_EQ(st.of(MeasurementKind::kWheelTicks).ignored, 1u);
+  EXPECT_EQ(st.of(MeasurementKind::kPressure).ignored, 1u);
+  EXPECT_EQ(st.of(MeasurementKind::kGnssVelocity).ignored, 0u);
+  EXPECT_EQ(st.of(MeasurementKind::kGnssVelocity).rejected[static_cast<std::size_t>(RejectReason::kNan)], 1u);
+}
+
+}  // namespace
+}  // namespace navfuse::filter
