@@ -6,7 +6,8 @@
 // its clock to GPS), or when both are the same device's own clock, i.e. the same time source
 // from the same input stream. Anything else is rejected with reason "time_base" until a mapping
 // between the clocks exists; navfuse replay has none yet for logs from different devices.
-// Device solutions, magnetometer and pressure are not fused and pass through for counting.
+// Kinds the filter does not fuse (filter/measurement_kinds.hpp: device solutions, magnetometer,
+// pressure, wheel ticks) pass through for counting.
 // Only one IMU stream drives the filter: IMU samples of other inputs are rejected as
 // "second_imu".
 #pragma once
@@ -16,6 +17,7 @@
 #include <string_view>
 
 #include "core/measurements/measurements.hpp"
+#include "filter/measurement_kinds.hpp"
 
 namespace navfuse::apps {
 
@@ -31,10 +33,9 @@ class TimeBaseGate {
       imu_source_ = h.time_source;  // follows a device switching from its own clock to GPS
       return std::nullopt;
     }
-    if (kind == MeasurementKind::kDeviceSolution || kind == MeasurementKind::kMagnetometer ||
-        kind == MeasurementKind::kPressure || !imu_stream_) {
-      return std::nullopt;
-    }
+    // Kinds the filter does not fuse pass through and are counted as ignored (the one list of
+    // them is the filter's kind table).
+    if (!filter::is_fused(kind) || !imu_stream_) return std::nullopt;
     const bool same_clock = h.time_source == imu_source_ &&
                             (h.time_source == TimeSource::kGps || h.stream_id == *imu_stream_);
     if (same_clock) return std::nullopt;

@@ -86,6 +86,19 @@ TEST(FusionRunner, GatesOtherClocksAndSecondImuAndCountsEveryOffer) {
   EXPECT_DOUBLE_EQ(s.run->imu_samples_per_s, 50.0);
 }
 
+TEST(FusionRunner, KindsTheFilterDoesNotFuseAreIgnoredWhateverTheirClock) {
+  Recorder rec;
+  FusionRunner runner(filter::FilterOptions{}, options(0.0), rec);
+  runner.offer(still_imu(kStartNs));
+  WheelTicks ticks;  // not fused (filter/measurement_kinds.hpp), on another device's clock
+  ticks.header = {kStartNs, TimeSource::kDeviceMonotonic, 1, 0};
+  runner.offer(ticks);
+  Summary s;
+  runner.fill_summary(s, 1.0);
+  EXPECT_EQ(rejected(s, MeasurementKind::kWheelTicks, "time_base"), 0u) << "the gate and the filter share one list";
+  EXPECT_EQ(rejected(s, MeasurementKind::kWheelTicks, "ignored"), 1u);
+}
+
 TEST(FusionRunner, RejectedImuSampleIsNoEpoch) {
   Recorder rec;
   FusionRunner runner(filter::FilterOptions{}, options(0.0), rec);
