@@ -47,7 +47,8 @@ class DecodeSink {
 class StreamDecoder {
  public:
   virtual ~StreamDecoder() = default;
-  // Short protocol name: "fe", "mip", "vn", "unicore" (the INPUT prefix of DESIGN.md).
+  // Short protocol name: "fe", "mip", "vn", "unicore", "imutxt", "rtklib" (the INPUT prefix of
+  // DESIGN.md).
   virtual std::string_view format() const = 0;
   // Feeds the next chunk of the stream. Chunks may split frames anywhere.
   virtual void feed(std::span<const std::uint8_t> bytes, DecodeSink& sink) = 0;
@@ -75,7 +76,11 @@ struct FrontendInfo {
   // number of complete, checksum-valid frames found in it. 0 = not this protocol.
   std::size_t (*probe)(std::span<const std::uint8_t> head);
   std::unique_ptr<StreamDecoder> (*make_decoder)();
+  // nullptr for the read-only formats (imutxt, rtklib: research data read, never written).
   std::unique_ptr<MeasurementEncoder> (*make_encoder)();
+  // Formats whose bytes do not carry the GPS week (imutxt: seconds of week only) are decoded in a
+  // week given from outside; nullptr for every format that times itself.
+  std::unique_ptr<StreamDecoder> (*make_decoder_in_week)(std::int32_t gps_week) = nullptr;
 };
 
 }  // namespace navfuse::frontends
