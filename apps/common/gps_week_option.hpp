@@ -14,7 +14,7 @@ inline CLI::Option* add_gps_week_option(CLI::App* app, std::optional<std::int32_
   return app
       ->add_option("--gps-week", week,
                    "GPS week of imutxt inputs (seconds of week only); default: from another input with GPS time")
-      ->check(CLI::Range(0, 100000));
+      ->check(CLI::Range(0, 10000));  // week 10000 is in 2171
 }
 
 }  // namespace navfuse::apps

@@ -15,6 +15,10 @@ constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
 constexpr std::int64_t kJstMinusUtcNs = 9 * 3600 * time::kNsPerSecond;
 // An ECEF x beyond this many metres cannot be a latitude/longitude in degrees or dms.
 constexpr double kEcefThresholdM = 360.0;
+// Dates a GNSS solution can have: from the GPS epoch to week 10000 (year 2171), well inside the
+// int64 nanoseconds of core/time.
+constexpr int kFirstYear = 1980, kLastYear = 2170;
+constexpr int kLastWeek = 10000;
 
 std::optional<int> parse_int(std::string_view s) {
   int v = 0;
@@ -31,7 +35,7 @@ std::optional<time::UtcDateTime> parse_calendar(std::string_view date, std::stri
   const auto y = parse_int(date.substr(0, 4)), mo = parse_int(date.substr(5, 2)), d = parse_int(date.substr(8, 2));
   const auto h = parse_int(clock.substr(0, 2)), mi = parse_int(clock.substr(3, 2));
   const auto s = text::parse_number(clock.substr(6));
-  if (!y || !mo || !d || !h || !mi || !s || *h > 23 || *mi > 59 || *s < 0.0 || *s >= 61.0) return std::nullopt;
+  if (!y || !mo || !d || !h || !mi || !s || *y < kFirstYear || *y > kLastYear || *h > 23 || *mi > 59 || *s < 0.0 || *s >= 61.0) return std::nullopt;
   return time::UtcDateTime{*y, *mo, *d, *h, *mi, *s};
 }
 
@@ -47,7 +51,7 @@ std::optional<std::int64_t> parse_time(std::string_view a, std::string_view b, T
   } else {
     const auto week = parse_int(a);
     const auto tow = text::parse_number(b);
-    if (!week || !tow || *week < 0 || *week > 100000 || *tow < 0.0 || *tow >= time::kSecondsPerWeek) return std::nullopt;
+    if (!week || !tow || *week < 0 || *week > kLastWeek || *tow < 0.0 || *tow >= time::kSecondsPerWeek) return std::nullopt;
     scale_ns = time::gps_ns_from_week_tow(*week, *tow);
   }
   switch (system) {
@@ -189,22 +193,22 @@ std::optional<PosRecord> parse_record(std::string_view line, const PosLayout& he
     }
   }
 
-  if (has_sd > 0) {
+  // A covariance in the file's axes, rotated into NED; false for a negative std dev.
+  const auto noise = [&](const double (&sdev)[3], const double (&sqcov)[3], bool with_cov, bool& valid,
+                         Eigen::Matrix3d& out) {
     const double zero[3] = {0.0, 0.0, 0.0};
-    const auto p = covariance(sd, has_sdc > 0 ? sdc : zero);
-    if (!p) return std::nullopt;
-    r.has_covariance = sd[0] > 0.0 || sd[1] > 0.0 || sd[2] > 0.0;
-    r.cov_ned_m2 = to_ned * *p * to_ned.transpose();
-  }
+    const auto p = covariance(sdev, with_cov ? sqcov : zero);
+    if (!p) return false;
+    valid = sdev[0] > 0.0 || sdev[1] > 0.0 || sdev[2] > 0.0;
+    out = to_ned * *p * to_ned.transpose();
+    return true;
+  };
+  if (has_sd > 0 && !noise(sd, sdc, has_sdc > 0, r.has_covariance, r.cov_ned_m2)) return std::nullopt;
   if (has_vel > 0) {
     r.has_velocity = true;
     r.vel_ned_mps = to_ned * Eigen::Vector3d(vel[0], vel[1], vel[2]);
-    if (has_sdv > 0) {
-      const double zero[3] = {0.0, 0.0, 0.0};
-      const auto p = covariance(sdv, has_sdvc > 0 ? sdvc : zero);
-      if (!p) return std::nullopt;
-      r.has_velocity_covariance = sdv[0] > 0.0 || sdv[1] > 0.0 || sdv[2] > 0.0;
-      r.vel_cov_ned_m2ps2 = to_ned * *p * to_ned.transpose();
+    if (has_sdv > 0 && !noise(sdv, sdvc, has_sdvc > 0, r.has_velocity_covariance, r.vel_cov_ned_m2ps2)) {
+      return std::nullopt;
     }
   }
   return r;
