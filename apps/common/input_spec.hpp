@@ -17,7 +17,7 @@ struct InputSpec {
   const frontends::FrontendInfo* frontend = nullptr;  // resolved (given or detected)
   bool format_detected = false;                       // true when not given by prefix
   // For formats timed by seconds of week only (imutxt): the GPS week to decode them in.
-  std::optional<std::int32_t> gps_week;
+  std::optional<std::int32_t> gps_week = std::nullopt;
 };
 
 // Parses the argument and resolves the front-end; throws CommandError with a one-line reason
