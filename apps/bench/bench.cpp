@@ -43,6 +43,7 @@ BenchResult run_bench(const BenchOptions& options) {
     throw CommandError("cannot create report folder '" + options.report_dir + "'");
   }
   const BenchLog log = collect_bench_log({.inputs = options.inputs,
+                                          .gps_week = options.gps_week,
                                           .config_path = options.config_path,
                                           .allow_truncated = options.allow_truncated,
                                           .progress = options.progress});

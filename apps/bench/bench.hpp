@@ -19,6 +19,7 @@ namespace navfuse::apps::bench {
 
 struct BenchOptions {
   std::vector<std::string> inputs;
+  std::optional<std::int32_t> gps_week;  // --gps-week: the week of imutxt inputs
   std::string config_path;
   std::string truth_path;
   std::string report_dir;

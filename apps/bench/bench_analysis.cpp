@@ -4,6 +4,8 @@
 
 #include "apps/bench/truth_reference.hpp"
 #include "apps/common/command_error.hpp"
+#include "core/geodesy/geodesy.hpp"
+#include "core/rotation/rotation.hpp"
 
 namespace navfuse::apps::bench {
 namespace {
@@ -46,6 +48,23 @@ PhaseTimeline phase_timeline(const BenchLog& log, const AnalysisOptions& options
                                 .stationary = (pose.status_flags & NavSolution::kStatusStationary) != 0});
   }
   return timeline;
+}
+
+// navfuse's poses with their positions moved from the IMU to the GNSS antenna (+ C_nb l). The
+// velocity is left at the IMU: the track has no angular rate for w x l, a few cm/s for a
+// decimetre lever arm in a turn; attitude is the same at both points.
+SolutionTrack moved_to_antenna(const SolutionTrack& track, const Eigen::Vector3d& lever_arm_m) {
+  SolutionTrack out;
+  for (TrackSample s : track.samples()) {
+    if ((s.valid & NavSolution::kValidPosition) != 0 && (s.valid & NavSolution::kValidAttitude) != 0) {
+      const geo::Llh p = geo::llh_offset({s.lat_rad, s.lon_rad, s.height_m}, rot::dcm_from_rpy(s.rpy_rad) * lever_arm_m);
+      s.lat_rad = p.lat_rad;
+      s.lon_rad = p.lon_rad;
+      s.height_m = p.height_m;
+    }
+    out.append(s);
+  }
+  return out;
 }
 
 void require_overlap(const PairComparison& pair, const std::string& what) {
@@ -107,10 +126,26 @@ BenchAnalysis analyse(const BenchLog& log, const AnalysisOptions& options) {
   }
   if (with_truth) {
     TruthReference truth(options.truth_path);
-    const PairSpec spec{.name = "navfuse_vs_truth", .estimate = "navfuse", .reference = "truth",
-                        .reference_is_truth = true, .sampled_is_estimate = true};
-    a.pairs.push_back(compare_pair(
-        spec, navfuse, [&truth](std::int64_t t, TrackInterpolator::Miss* miss) { return truth.at(t, miss); }, a.phases));
+    // An antenna reference (RTKLIB) is compared with navfuse's poses moved to the antenna.
+    const SolutionTrack at_antenna = truth.point() == ReferencePoint::kAntenna
+                                         ? moved_to_antenna(log.navfuse, log.antenna_lever_arm_m)
+                                         : SolutionTrack{};
+    const View estimate =
+        truth.point() == ReferencePoint::kAntenna ? at_antenna.with(Quantity::kPosition, true) : navfuse;
+    if (truth.sparse()) {
+      // A 1-10 Hz reference: compared at its epochs, navfuse interpolated to them.
+      const SolutionTrack epochs = truth.epochs();
+      const TrackInterpolator navfuse_track(estimate, gap_limit_ns(estimate, options));
+      const PairSpec spec{.name = "navfuse_vs_truth", .estimate = "navfuse", .reference = "truth",
+                          .reference_is_truth = true, .sampled_is_estimate = false};
+      a.pairs.push_back(compare_pair(spec, epochs.with_any(), interpolating_lookup(navfuse_track), a.phases));
+    } else {
+      const PairSpec spec{.name = "navfuse_vs_truth", .estimate = "navfuse", .reference = "truth",
+                          .reference_is_truth = true, .sampled_is_estimate = true};
+      a.pairs.push_back(compare_pair(
+          spec, estimate, [&truth](std::int64_t t, TrackInterpolator::Miss* miss) { return truth.at(t, miss); },
+          a.phases));
+    }
     require_overlap(a.pairs.back(), "the truth file '" + options.truth_path + "' covers none of navfuse's navigation (" +
                                         span_text(navfuse, log.start_ns) + ")");
   }

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "apps/bench/bench.hpp"
+#include "apps/common/gps_week_option.hpp"
 
 namespace navfuse::apps {
 
@@ -16,7 +17,8 @@ void add_bench_command(CLI::App& root, int& exit_code) {
   auto args = std::make_shared<Args>();
   CLI::App* cmd = root.add_subcommand(
       "bench", "Compare navfuse with the device's own solution in the same log (and both with truth)");
-  cmd->add_option("inputs", args->options.inputs, "[FORMAT:]PATH of each log (fe, mip, vn, unicore)")->required();
+  cmd->add_option("inputs", args->options.inputs, "[FORMAT:]PATH of each log (fe, mip, vn, unicore, rtklib, imutxt)")->required();
+  add_gps_week_option(cmd, args->options.gps_week);
   cmd->add_option("--config", args->options.config_path, "YAML configuration (default: the device's profile)");
   cmd->add_option("--truth", args->options.truth_path, "truth CSV (navfuse sim --truth) to compare both with");
   cmd->add_option("--report", args->options.report_dir, "folder for report.html, metrics.json and CSVs")->required();

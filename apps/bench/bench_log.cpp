@@ -65,13 +65,13 @@ class BenchObserver final : public FusionObserver {
 
 BenchLog collect_bench_log(const BenchLogOptions& options) {
   if (options.inputs.empty()) throw CommandError("bench needs at least one INPUT");
-  std::vector<InputSpec> specs;
-  for (const auto& arg : options.inputs) specs.push_back(resolve_input(arg));
+  const std::vector<InputSpec> specs = resolve_inputs(options.inputs, options.gps_week);
   const config::Config config = replay_config(options.config_path, specs.front().frontend->format);
 
   MeasurementMerger merger(specs, {.chunk_bytes = 16 * 1024, .allow_truncated = options.allow_truncated});
   BenchLog log;
   log.output_rate_hz = config.output.rate_hz;
+  log.antenna_lever_arm_m = Eigen::Vector3d(config.gnss.lever_arm_m.data());
   BenchObserver observer(log, specs);
   FusionRunner runner(filter::options_from_config(config),
                       {.output_rate_hz = config.output.rate_hz, .solutions = FusionRunner::Solutions::kPoses, .gnss_outages = {}},

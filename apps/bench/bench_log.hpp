@@ -21,6 +21,7 @@ namespace navfuse::apps::bench {
 
 struct BenchLogOptions {
   std::vector<std::string> inputs;  // [FORMAT:]PATH
+  std::optional<std::int32_t> gps_week;  // --gps-week: the week of imutxt inputs
   std::string config_path;          // empty: the device profile of the first input
   bool allow_truncated = false;
   bool progress = false;  // report progress of long logs on stderr
@@ -38,6 +39,7 @@ struct BenchLog {
   TimeSource time_source = TimeSource::kUnknown;  // the IMU's (and so navfuse's) time base
   std::uint64_t imu_samples = 0;
   double output_rate_hz = 0.0;
+  Eigen::Vector3d antenna_lever_arm_m = Eigen::Vector3d::Zero();  // gnss.lever_arm_m of the config
   Summary summary;  // inputs and decoded counts, as replay reports them
 };
 

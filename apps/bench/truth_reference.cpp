@@ -1,13 +1,15 @@
 #include "apps/bench/truth_reference.hpp"
 
+#include <limits>
+
 namespace navfuse::apps::bench {
 
 TrackSample track_sample_from(const TruthPoint& p) {
   TrackSample s;
   s.time_ns = p.time_ns;
   s.mode = NavMode::kNavigation;
-  s.valid = NavSolution::kValidPosition | NavSolution::kValidVelocity | NavSolution::kValidAttitude |
-            NavSolution::kValidHeading;
+  s.valid = NavSolution::kValidPosition | (p.has_velocity ? NavSolution::kValidVelocity : 0u) |
+            (p.has_attitude ? NavSolution::kValidAttitude | NavSolution::kValidHeading : 0u);
   if (!p.gnss_available) s.status_flags |= NavSolution::kStatusGnssOutage;
   if (p.stationary) s.status_flags |= NavSolution::kStatusStationary;
   s.lat_rad = p.lat_rad;
@@ -23,6 +25,12 @@ std::optional<TrackSample> TruthReference::at(std::int64_t time_ns, TrackInterpo
   if (miss != nullptr) *miss = p ? TrackInterpolator::Miss::kNone : TrackInterpolator::Miss::kOutside;
   if (!p) return std::nullopt;
   return track_sample_from(*p);
+}
+
+SolutionTrack TruthReference::epochs() {
+  SolutionTrack track;
+  while (const auto p = track_.next_until(std::numeric_limits<std::int64_t>::max())) track.append(track_sample_from(*p));
+  return track;
 }
 
 std::optional<PhaseLabel> TruthReference::phase_at(std::int64_t time_ns) {

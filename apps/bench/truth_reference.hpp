@@ -1,6 +1,7 @@
-// Truth as a bench solution: the simulator's truth CSV read and interpolated by replay's
-// TruthTrack (so that bench and `navfuse replay --truth` see exactly the same truth values),
-// presented as full TrackSamples (every quantity valid, no uncertainty) and phase labels.
+// Truth as a bench solution: the reference (navfuse truth CSV, RTKLIB .pos, KF-GINS .nav) read
+// and interpolated by replay's TruthTrack (so that bench and `navfuse replay --truth` see exactly
+// the same truth values), presented as TrackSamples (the quantities the reference has, no
+// uncertainty) and phase labels.
 //
 // TruthTrack streams the file and answers only increasing query times; every pass over a
 // solution therefore opens its own TruthReference.
@@ -26,6 +27,10 @@ class TruthReference {
   std::optional<TrackSample> at(std::int64_t time_ns, TrackInterpolator::Miss* miss = nullptr);
   // The phase at `time_ns` with the truth sample it came from.
   std::optional<PhaseLabel> phase_at(std::int64_t time_ns);
+  // Every row of a sparse reference (compared at its own epochs); not to be mixed with at().
+  SolutionTrack epochs();
+  ReferencePoint point() const { return track_.point(); }
+  bool sparse() const { return track_.sparse(); }
 
  private:
   TruthTrack track_;

@@ -1,7 +1,9 @@
 #include "apps/common/frontend_registry.hpp"
 
 #include "frontends/fusionengine/frontend.hpp"
+#include "frontends/imutxt/frontend.hpp"
 #include "frontends/mip/frontend.hpp"
+#include "frontends/rtklib/frontend.hpp"
 #include "frontends/unicore/frontend.hpp"
 #include "frontends/vectornav/frontend.hpp"
 
@@ -10,10 +12,12 @@ namespace navfuse::apps {
 const std::vector<const frontends::FrontendInfo*>& frontends_list() {
   static const std::vector<const frontends::FrontendInfo*> list = [] {
     // Binary protocols first: on a tie in valid frames the one with the stronger check wins
-    // (CRC-32, then Fletcher, then CRC-16 / XOR-checked ASCII).
+    // (CRC-32, then Fletcher, then CRC-16 / XOR-checked ASCII). The unchecked research text
+    // formats come last: they win only where no checked frame is found.
     return std::vector<const frontends::FrontendInfo*>{
         &frontends::fusionengine::frontend(), &frontends::mip::frontend(),
-        &frontends::vectornav::frontend(), &frontends::unicore::frontend()};
+        &frontends::vectornav::frontend(), &frontends::unicore::frontend(),
+        &frontends::rtklib::frontend(), &frontends::imutxt::frontend()};
   }();
   return list;
 }

@@ -11,7 +11,8 @@
 
 namespace navfuse::apps {
 
-// Every registered front-end ("fe", "mip", "vn", "unicore"), in detection-priority order.
+// Every registered front-end ("fe", "mip", "vn", "unicore", "rtklib", "imutxt"), in
+// detection-priority order.
 const std::vector<const frontends::FrontendInfo*>& frontends_list();
 // The front-end for a format name; nullptr when unknown.
 const frontends::FrontendInfo* find_frontend(std::string_view format);

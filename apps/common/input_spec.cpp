@@ -7,6 +7,7 @@
 
 #include "apps/common/command_error.hpp"
 #include "apps/common/frontend_registry.hpp"
+#include "apps/common/gps_week_inference.hpp"
 
 namespace navfuse::apps {
 
@@ -42,6 +43,29 @@ InputSpec resolve_input(const std::string& argument) {
     }
   }
   return spec;
+}
+
+std::vector<InputSpec> resolve_inputs(const std::vector<std::string>& arguments,
+                                      std::optional<std::int32_t> gps_week) {
+  std::vector<InputSpec> specs;
+  for (const auto& arg : arguments) specs.push_back(resolve_input(arg));
+  for (InputSpec& spec : specs) {
+    if (spec.frontend->make_decoder_in_week == nullptr) continue;
+    spec.gps_week = gps_week ? gps_week : infer_gps_week(spec, specs);
+    if (!spec.gps_week) {
+      throw CommandError("input '" + spec.path + "' (" + std::string(spec.frontend->format) +
+                         ") is timed in seconds of week: give the GPS week with --gps-week W, or "
+                         "an input with GPS time (e.g. rtklib:FILE.pos) to take it from");
+    }
+  }
+  return specs;
+}
+
+std::unique_ptr<frontends::StreamDecoder> make_decoder(const InputSpec& spec) {
+  if (spec.gps_week && spec.frontend->make_decoder_in_week != nullptr) {
+    return spec.frontend->make_decoder_in_week(*spec.gps_week);
+  }
+  return spec.frontend->make_decoder();
 }
 
 }  // namespace navfuse::apps

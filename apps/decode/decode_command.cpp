@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/common/command_error.hpp"
+#include "apps/common/gps_week_option.hpp"
 #include "apps/common/input_spec.hpp"
 #include "apps/common/measurement_fields.hpp"
 #include "apps/common/summary.hpp"
@@ -23,6 +24,7 @@ namespace {
 
 struct DecodeOptions {
   std::string input;
+  std::optional<std::int32_t> gps_week;
   std::string format = "csv";
   std::string out_path;  // empty: stdout
   std::string summary_json;
@@ -122,7 +124,7 @@ class PrintingSink final : public frontends::DecodeSink {
 };
 
 int run_decode(const DecodeOptions& opt) {
-  const InputSpec spec = resolve_input(opt.input);
+  const InputSpec spec = resolve_inputs({opt.input}, opt.gps_week).front();
   std::ifstream in(spec.path, std::ios::binary);
   if (!in) throw CommandError("cannot open input '" + spec.path + "'");
 
@@ -140,7 +142,7 @@ int run_decode(const DecodeOptions& opt) {
   };
 
   Summary summary;
-  auto decoder = spec.frontend->make_decoder();
+  auto decoder = make_decoder(spec);
   PrintingSink sink(os, opt.format == "jsonl", summary);
   sink.protocol_ = spec.frontend->format;
   // 256 KiB of input gives a few MB of records to hold before they go to the file.
@@ -172,8 +174,10 @@ int run_decode(const DecodeOptions& opt) {
 void add_decode_command(CLI::App& root, int& exit_code) {
   auto opt = std::make_shared<DecodeOptions>();
   CLI::App* sub = root.add_subcommand("decode", "Decode a log: every frame and the normalised measurements");
-  sub->add_option("INPUT", opt->input, "[FORMAT:]PATH; FORMAT one of fe, mip, vn, unicore (detected when omitted)")
+  sub->add_option("INPUT", opt->input, "[FORMAT:]PATH; FORMAT one of fe, mip, vn, unicore, rtklib, imutxt (detected when "
+                                          "omitted)")
       ->required();
+  add_gps_week_option(sub, opt->gps_week);
   sub->add_option("--format", opt->format, "Output format")->check(CLI::IsMember({"csv", "jsonl"}));
   sub->add_option("-o,--out", opt->out_path, "Write the records to this file instead of stdout");
   sub->add_option("--summary-json", opt->summary_json, "Write the counters as JSON to this file");

@@ -41,7 +41,7 @@ MeasurementMerger::MeasurementMerger(const std::vector<InputSpec>& inputs, const
     }
     struct stat st {};
     if (::fstat(fileno(s->file), &st) == 0 && st.st_size > 0) total_bytes_ += static_cast<std::uint64_t>(st.st_size);
-    s->decoder = s->spec.frontend->make_decoder();
+    s->decoder = make_decoder(s->spec);
     s->stream_id = static_cast<std::uint16_t>(i);
     s->decoded = &decoded_;
     streams_.push_back(std::move(s));

@@ -67,8 +67,7 @@ config::Config replay_config(const std::string& config_path, std::string_view fi
 
 ReplayResult run_replay(const ReplayOptions& options) {
   if (options.inputs.empty()) throw CommandError("replay needs at least one INPUT");
-  std::vector<InputSpec> specs;
-  for (const auto& arg : options.inputs) specs.push_back(resolve_input(arg));
+  const std::vector<InputSpec> specs = resolve_inputs(options.inputs, options.gps_week);
   const config::Config config = replay_config(options.config_path, specs.front().frontend->format);
   const double rate_hz = options.output_rate_hz.value_or(config.output.rate_hz);
   if (!(rate_hz >= 0.0)) throw CommandError("output rate must be >= 0 Hz (0 = every IMU sample)");
@@ -81,7 +80,9 @@ ReplayResult run_replay(const ReplayOptions& options) {
                      {{"--fe-out", options.fe_out}, {"--mip-out", options.mip_out}, {"--csv", options.csv_out}});
   MeasurementMerger merger(specs, {.chunk_bytes = 16 * 1024, .allow_truncated = options.allow_truncated});
   std::unique_ptr<TruthAccuracy> accuracy;
-  if (!options.truth_path.empty()) accuracy = std::make_unique<TruthAccuracy>(options.truth_path);
+  if (!options.truth_path.empty()) {
+    accuracy = std::make_unique<TruthAccuracy>(options.truth_path, Eigen::Vector3d(config.gnss.lever_arm_m.data()));
+  }
   PoseOutputs outputs;
   if (!options.fe_out.empty()) outputs.add(std::make_unique<FeFileWriter>(options.fe_out));
   if (!options.mip_out.empty()) outputs.add(std::make_unique<MipFileWriter>(options.mip_out));

@@ -5,6 +5,7 @@
 
 #include "apps/common/command_error.hpp"
 #include "apps/common/interrupt_signals.hpp"
+#include "apps/common/gps_week_option.hpp"
 #include "apps/common/summary.hpp"
 #include "apps/replay/replay.hpp"
 
@@ -61,8 +62,9 @@ void add_replay_command(CLI::App& root, int& exit_code) {
   ReplayOptions& o = args->options;
   CLI::App* sub = root.add_subcommand("replay", "Replay logs through the filter as fast as possible");
   sub->add_option("INPUT", o.inputs, "[FORMAT:]PATH, several merged by measurement time; FORMAT one of fe, mip, vn, "
-                                     "unicore (detected when omitted)")
+                                     "unicore, rtklib, imutxt (detected when omitted)")
       ->required();
+  add_gps_week_option(sub, o.gps_week);
   sub->add_option("--config", o.config_path, "YAML configuration (default: the device profile of the first input)");
   sub->add_option("--fe-out", o.fe_out, "Write FusionEngine Pose/PoseAux/GNSSInfo/IMUOutput to this file");
   sub->add_option("--mip-out", o.mip_out, "Write MIP filter (0x82) packets to this file");
@@ -71,7 +73,9 @@ void add_replay_command(CLI::App& root, int& exit_code) {
                               "Publish NAVFUSE_POSE and NAVFUSE_IMU at the pose rate on LCM [URL]")
                    ->expected(0, 1);
   sub->add_option("--summary-json", args->summary_json, "Write the summary as JSON to this file");
-  sub->add_option("--truth", o.truth_path, "Truth CSV (navfuse sim --truth): report the error against it");
+  sub->add_option("--truth", o.truth_path,
+                  "Reference to report the error against: [csv:|rtklib:|nav:]PATH (navfuse sim --truth CSV, "
+                  "RTKLIB .pos at the antenna, KF-GINS .nav)");
   sub->add_option("--rate", args->rate_hz, "Pose output rate in Hz, overriding output.rate_hz (0 = every IMU sample)")
       ->check(CLI::NonNegativeNumber);
   sub->add_option("--gnss-outage", o.gnss_outage,

@@ -13,6 +13,24 @@ double angle_error_deg(double a_rad, double b_rad) {
   return std::abs(std::remainder(a_rad - b_rad, 2.0 * rot::kPi)) * rot::kRadToDeg;
 }
 
+bool navigating(const NavSolution& s) { return s.mode == NavMode::kNavigation || s.mode == NavMode::kDeadReckoning; }
+
+// The solution at `t` between poses a and b: linear in position, velocity, rates; shorter arc in
+// the angles.
+NavSolution interpolate(const NavSolution& a, const NavSolution& b, std::int64_t t) {
+  if (b.header.time_ns == a.header.time_ns) return b;
+  const double f = static_cast<double>(t - a.header.time_ns) / static_cast<double>(b.header.time_ns - a.header.time_ns);
+  NavSolution s = a;
+  s.header.time_ns = t;
+  s.lat_rad += f * (b.lat_rad - a.lat_rad);
+  s.lon_rad += f * std::remainder(b.lon_rad - a.lon_rad, 2.0 * rot::kPi);
+  s.height_m += f * (b.height_m - a.height_m);
+  s.vel_ned_mps += f * (b.vel_ned_mps - a.vel_ned_mps);
+  s.angular_rate_rps += f * (b.angular_rate_rps - a.angular_rate_rps);
+  for (int i = 0; i < 3; ++i) s.rpy_rad[i] = rot::wrap_pi(a.rpy_rad[i] + f * rot::wrap_pi(b.rpy_rad[i] - a.rpy_rad[i]));
+  return s;
+}
+
 }  // namespace
 
 const char* TruthAccuracy::metric_name(int metric) {
@@ -22,26 +40,63 @@ const char* TruthAccuracy::metric_name(int metric) {
 }
 
 void TruthAccuracy::add(const NavSolution& s) {
-  if (s.mode != NavMode::kNavigation && s.mode != NavMode::kDeadReckoning) return;
+  if (truth_.sparse()) {
+    add_sparse(s);
+    return;
+  }
+  if (!navigating(s)) return;
   const auto t = truth_.at(s.header.time_ns);
   if (!t) {
     ++poses_without_truth_;
     return;
   }
+  score(s, *t);
+}
+
+void TruthAccuracy::add_sparse(const NavSolution& s) {
+  const bool usable = navigating(s);
+  while (const auto row = truth_.next_until(s.header.time_ns)) {
+    if (usable && previous_ && s.header.time_ns - previous_->header.time_ns <= kMaxPoseGapNs &&
+        row->time_ns >= previous_->header.time_ns) {
+      score(interpolate(*previous_, s, row->time_ns), *row);
+    } else {
+      ++epochs_unscored_;
+    }
+  }
+  if (usable) {
+    previous_ = s;
+  } else {
+    previous_.reset();
+  }
+}
+
+void TruthAccuracy::score(const NavSolution& imu_point, const TruthPoint& t) {
+  NavSolution s = imu_point;
+  if (truth_.point() == ReferencePoint::kAntenna) {
+    const Eigen::Matrix3d c_nb = rot::dcm_from_rpy(s.rpy_rad);
+    const geo::Llh antenna = geo::llh_offset({s.lat_rad, s.lon_rad, s.height_m}, c_nb * lever_arm_m_);
+    s.lat_rad = antenna.lat_rad;
+    s.lon_rad = antenna.lon_rad;
+    s.height_m = antenna.height_m;
+    s.vel_ned_mps += c_nb * s.angular_rate_rps.cross(lever_arm_m_);
+  }
   const Eigen::Vector3d d_ned =
-      geo::ned_offset_m({t->lat_rad, t->lon_rad, t->height_m}, {s.lat_rad, s.lon_rad, s.height_m});
+      geo::ned_offset_m({t.lat_rad, t.lon_rad, t.height_m}, {s.lat_rad, s.lon_rad, s.height_m});
   const std::array<double, kMetricCount> e = {
       std::hypot(d_ned.x(), d_ned.y()),
-      std::abs(s.height_m - t->height_m),
-      (s.vel_ned_mps - t->vel_ned_mps).norm(),
-      angle_error_deg(s.rpy_rad.x(), t->rpy_rad.x()),
-      angle_error_deg(s.rpy_rad.y(), t->rpy_rad.y()),
-      angle_error_deg(s.rpy_rad.z(), t->rpy_rad.z())};
+      std::abs(s.height_m - t.height_m),
+      (s.vel_ned_mps - t.vel_ned_mps).norm(),
+      angle_error_deg(s.rpy_rad.x(), t.rpy_rad.x()),
+      angle_error_deg(s.rpy_rad.y(), t.rpy_rad.y()),
+      angle_error_deg(s.rpy_rad.z(), t.rpy_rad.z())};
+  const std::array<bool, kMetricCount> have = {true, true, t.has_velocity, t.has_attitude, t.has_attitude,
+                                               t.has_attitude};
   if (all_[0].size() == 0) first_ns_ = s.header.time_ns;
   last_ns_ = s.header.time_ns;
   for (int m = 0; m < kMetricCount; ++m) {
+    if (!have[m]) continue;
     all_[m].add(e[m]);
-    if (!t->gnss_available) outage_[m].add(e[m]);
+    if (!t.gnss_available) outage_[m].add(e[m]);
   }
 }
 
@@ -54,17 +109,28 @@ nlohmann::ordered_json TruthAccuracy::to_json() const {
   j["samples"] = samples();
   j["overlap_s"] = samples() ? static_cast<double>(last_ns_ - first_ns_) * 1e-9 : 0.0;
   j["poses_without_truth"] = poses_without_truth_;
-  for (int m = 0; m < kMetricCount; ++m) j[metric_name(m)] = apps::to_json(summary(m));
+  j["reference"] = {{"format", truth_.format()},
+                    {"point", truth_.point() == ReferencePoint::kAntenna ? "antenna" : "imu"},
+                    {"rows", truth_.rows_read()},
+                    {"rows_not_fixed_skipped", truth_.rows_skipped()},
+                    {"epochs_unscored", epochs_unscored_}};
+  for (int m = 0; m < kMetricCount; ++m) {
+    if (all_[m].size() > 0 || m == kHorizontal) j[metric_name(m)] = apps::to_json(summary(m));
+  }
   nlohmann::ordered_json o;
   o["samples"] = outage_[0].size();
-  for (int m = 0; m < kMetricCount; ++m) o[metric_name(m)] = apps::to_json(summary(m, true));
+  for (int m = 0; m < kMetricCount; ++m) {
+    if (all_[m].size() > 0 || m == kHorizontal) o[metric_name(m)] = apps::to_json(summary(m, true));
+  }
   j["gnss_outage"] = o;
   return j;
 }
 
 void TruthAccuracy::print(std::ostream& os) const {
   char line[160];
-  os << "accuracy against truth (" << samples() << " poses in navigation";
+  os << "accuracy against " << truth_.format() << " reference at the "
+     << (truth_.point() == ReferencePoint::kAntenna ? "antenna" : "IMU") << " (" << samples()
+     << (truth_.sparse() ? " reference epochs" : " poses") << " in navigation";
   if (outage_[0].size() > 0) os << ", " << outage_[0].size() << " of them in GNSS outages";
   os << "):\n";
   std::snprintf(line, sizeof line, "  %-14s %10s %10s %10s %10s %10s\n", "", "rms", "p50", "p95", "p99", "max");
@@ -74,7 +140,9 @@ void TruthAccuracy::print(std::ostream& os) const {
                   e.p99, e.max);
     os << line;
   };
-  for (int m = 0; m < kMetricCount; ++m) row(metric_name(m), summary(m));
+  for (int m = 0; m < kMetricCount; ++m) {
+    if (all_[m].size() > 0 || m == kHorizontal) row(metric_name(m), summary(m));
+  }
   if (outage_[0].size() > 0) {
     row("outage horiz_m", summary(kHorizontal, true));
     row("outage vert_m", summary(kVertical, true));

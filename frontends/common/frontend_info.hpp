@@ -44,6 +44,9 @@ struct FrontendInfo {
   // `navfuse sim --wheel-out`: this protocol is the one a host uses to send wheel / vehicle speed
   // to a fusion device, so simulated odometry is written in it.
   bool odometry_input = false;
+  // Formats whose bytes do not carry the GPS week (imutxt: seconds of week only) are decoded in a
+  // week given from outside; nullptr for every format that times itself.
+  std::unique_ptr<StreamDecoder> (*make_decoder_in_week)(std::int32_t gps_week) = nullptr;
 };
 
 }  // namespace navfuse::frontends

@@ -47,7 +47,8 @@ class DecodeSink {
 class StreamDecoder {
  public:
   virtual ~StreamDecoder() = default;
-  // Short protocol name: "fe", "mip", "vn", "unicore" (the INPUT prefix of DESIGN.md).
+  // Short protocol name: "fe", "mip", "vn", "unicore", "imutxt", "rtklib" (the INPUT prefix of
+  // DESIGN.md).
   virtual std::string_view format() const = 0;
   // Feeds the next chunk of the stream. Chunks may split frames anywhere.
   virtual void feed(std::span<const std::uint8_t> bytes, DecodeSink& sink) = 0;
