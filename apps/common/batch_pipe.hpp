@@ -90,6 +90,11 @@ class BatchPipe {
     full_.pop_front();
     return true;
   }
+  // What the consumer failed with (nullptr: nothing), for a producer that waited for it to end.
+  std::exception_ptr consumer_failure() {
+    std::lock_guard lock(mutex_);
+    return consumer_error_;
+  }
   // The consumer gives up: the producer's next hand_over() or close() rethrows `error`.
   void fail(std::exception_ptr error) {
     {

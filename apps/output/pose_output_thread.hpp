@@ -1,21 +1,17 @@
 // PoseOutputs on a thread of their own, for `navfuse replay`: the filter thread hands each IMU
-// epoch over and goes on, while encoding (FusionEngine / MIP / CSV) and file writes run on a
-// second core. With a pose per IMU sample the encoders cost about as much as the filter, so
-// this is what lets a replay use the machine's two cores.
+// epoch over and goes on, while encoding (FusionEngine / MIP / CSV) and file writes run on
+// another core. With a pose per IMU sample the encoders cost about as much as the filter, so
+// this is what lets a replay use the machine's cores.
 //
-// Nothing is dropped (unlike the live nav process, a replay must write every epoch): epochs are
-// passed in batches through a bounded set of buffers and the producer waits when the writer
-// falls that far behind. Order is kept, so outputs are byte-identical to writing inline.
-// Buffers are allocated once; no allocation per epoch.
+// Nothing is dropped (unlike the live nav process, a replay must write every epoch): epochs go
+// in batches through a BatchPipe (apps/common/batch_pipe.hpp), which makes the producer wait when
+// the writer falls that far behind. Order is kept, so outputs are byte-identical to writing
+// inline. Buffers are allocated once; no allocation per epoch.
 #pragma once
 
-#include <condition_variable>
-#include <deque>
-#include <exception>
-#include <mutex>
 #include <thread>
-#include <vector>
 
+#include "apps/common/batch_pipe.hpp"
 #include "apps/fusion/output_epoch.hpp"
 #include "apps/output/pose_outputs.hpp"
 
@@ -38,22 +34,12 @@ class PoseOutputThread {
   void finish();
 
  private:
-  using Batch = std::vector<OutputEpoch>;
-
-  void hand_over();  // the batch being filled -> the writer thread
-  void run();        // the writer thread
-  void stop_thread();
-  void rethrow_if_failed();
+  void run();  // the writer thread
+  void close_and_join();
 
   PoseOutputs& outputs_;
-  Batch filling_;  // producer side only
-
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  std::deque<Batch> full_;   // oldest first
-  std::vector<Batch> free_;  // emptied batches, capacity kept
-  bool closing_ = false;
-  std::exception_ptr error_;
+  BatchPipe<OutputEpoch> pipe_;
+  bool closed_ = false;
   std::thread thread_;
 };
 
