@@ -1,7 +1,6 @@
 #include "apps/common/gps_week_inference.hpp"
 
 #include <cmath>
-#include <fstream>
 
 #include "apps/common/frontend_registry.hpp"
 #include "core/time/gps_time.hpp"
@@ -20,14 +19,10 @@ struct FirstTimeSink final : frontends::DecodeSink {
 };
 
 std::optional<std::int64_t> first_time_ns(const InputSpec& spec, bool gps_only) {
-  std::ifstream in(spec.path, std::ios::binary);
-  std::vector<std::uint8_t> head(kProbeBytes);
-  in.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
   FirstTimeSink sink;
   sink.gps_only = gps_only;
   auto decoder = spec.frontend->make_decoder();
-  decoder->feed(head, sink);
+  decoder->feed(spec.head, sink);
   return sink.time_ns;
 }
 

@@ -2,7 +2,7 @@
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
+#include <sys/stat.h>
 #include <vector>
 
 #include "apps/common/command_error.hpp"
@@ -27,12 +27,22 @@ InputSpec resolve_input(const std::string& argument) {
                          known_formats() + ")");
     }
   }
-  std::ifstream in(spec.path, std::ios::binary);
-  if (!in) throw CommandError("cannot open input '" + spec.path + "': " + std::strerror(errno));
-  std::vector<std::uint8_t> head(kProbeBytes);
-  in.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
+  std::shared_ptr<std::FILE> file(std::fopen(spec.path.c_str(), "rb"), [](std::FILE* f) {
+    if (f != nullptr) std::fclose(f);
+  });
+  if (!file) throw CommandError("cannot open input '" + spec.path + "': " + std::strerror(errno));
+  std::vector<std::uint8_t>& head = spec.head;
+  head.resize(kProbeBytes);
+  std::size_t got = 0;
+  while (got < head.size()) {  // a pipe delivers in pieces
+    const std::size_t n = std::fread(head.data() + got, 1, head.size() - got, file.get());
+    if (n == 0) break;
+    got += n;
+  }
+  head.resize(got);
   if (head.empty()) throw CommandError("input '" + spec.path + "' is empty");
+  struct stat st {};
+  if (::fstat(fileno(file.get()), &st) == 0 && !S_ISREG(st.st_mode)) spec.stream = std::move(file);
   if (!spec.frontend) {
     spec.frontend = detect_format(head);
     spec.format_detected = true;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
@@ -18,6 +19,12 @@ struct InputSpec {
   bool format_detected = false;                       // true when not given by prefix
   // For formats timed by seconds of week only (imutxt): the GPS week to decode them in.
   std::optional<std::int32_t> gps_week = std::nullopt;
+  // The first bytes (up to kProbeBytes), read once for detection and for the week inference.
+  std::vector<std::uint8_t> head;
+  // A pipe, FIFO or device (cat log | navfuse replay vn:/dev/stdin) cannot be read twice: it
+  // stays open here, and the reader feeds `head` before going on from where detection stopped
+  // (before, the first 64 KiB were lost). Null for regular files, which are reopened.
+  std::shared_ptr<std::FILE> stream;
 };
 
 // Parses the argument and resolves the front-end; throws CommandError with a one-line reason

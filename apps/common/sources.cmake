@@ -1,6 +1,7 @@
 target_sources(navfuse_apps PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/frontend_registry.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gps_week_inference.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/input_bytes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/input_spec.cpp
   ${CMAKE_CURRENT_LIST_DIR}/interrupt_signals.cpp
   ${CMAKE_CURRENT_LIST_DIR}/measurement_fields.cpp

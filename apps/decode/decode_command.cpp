@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/common/command_error.hpp"
+#include "apps/common/input_bytes.hpp"
 #include "apps/common/gps_week_option.hpp"
 #include "apps/common/input_spec.hpp"
 #include "apps/common/measurement_fields.hpp"
@@ -125,8 +126,7 @@ class PrintingSink final : public frontends::DecodeSink {
 
 int run_decode(const DecodeOptions& opt) {
   const InputSpec spec = resolve_inputs({opt.input}, opt.gps_week).front();
-  std::ifstream in(spec.path, std::ios::binary);
-  if (!in) throw CommandError("cannot open input '" + spec.path + "'");
+  InputBytes in(spec);
 
   check_output_paths({spec.path}, {{"--out", opt.out_path}, {"--summary-json", opt.summary_json}});
   // -o: the records gather in `text` and go to the file after each input chunk (OutputFile:
@@ -147,14 +147,10 @@ int run_decode(const DecodeOptions& opt) {
   sink.protocol_ = spec.frontend->format;
   // 256 KiB of input gives a few MB of records to hold before they go to the file.
   std::vector<std::uint8_t> chunk(1 << 18);
-  while (in) {
-    in.read(reinterpret_cast<char*>(chunk.data()), static_cast<std::streamsize>(chunk.size()));
-    const auto n = static_cast<std::size_t>(in.gcount());
-    if (n == 0) break;
+  while (const std::size_t n = in.read(chunk)) {
     decoder->feed(std::span(chunk.data(), n), sink);
     drain();
   }
-  if (in.bad()) throw CommandError("read error on '" + spec.path + "'");
   decoder->finish(sink);
   if (file) {
     drain();

@@ -1,17 +1,14 @@
 #include "apps/fusion/measurement_merger.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <sys/stat.h>
-
 #include "apps/common/command_error.hpp"
+#include "apps/common/input_bytes.hpp"
 
 namespace navfuse::apps {
 
 // One input: its file, decoder and the measurements decoded from the current chunk.
 struct MeasurementMerger::Stream final : frontends::DecodeSink {
   InputSpec spec;
-  std::FILE* file = nullptr;
+  std::unique_ptr<InputBytes> bytes;
   std::unique_ptr<frontends::StreamDecoder> decoder;
   std::vector<Measurement> queue;  // capacity reused chunk after chunk
   std::size_t head = 0;
@@ -19,9 +16,6 @@ struct MeasurementMerger::Stream final : frontends::DecodeSink {
   bool ended = false;
   std::array<std::uint64_t, static_cast<std::size_t>(MeasurementKind::kCount)>* decoded = nullptr;
 
-  ~Stream() override {
-    if (file != nullptr) std::fclose(file);
-  }
   void on_measurement(const Measurement& m) override {
     queue.push_back(m);
     header_of(queue.back()).stream_id = stream_id;
@@ -35,12 +29,8 @@ MeasurementMerger::MeasurementMerger(const std::vector<InputSpec>& inputs, const
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     auto s = std::make_unique<Stream>();
     s->spec = inputs[i];
-    s->file = std::fopen(s->spec.path.c_str(), "rb");
-    if (s->file == nullptr) {
-      throw CommandError("cannot open input '" + s->spec.path + "': " + std::strerror(errno));
-    }
-    struct stat st {};
-    if (::fstat(fileno(s->file), &st) == 0 && st.st_size > 0) total_bytes_ += static_cast<std::uint64_t>(st.st_size);
+    s->bytes = std::make_unique<InputBytes>(s->spec);
+    total_bytes_ += s->bytes->size_bytes();
     s->decoder = make_decoder(s->spec);
     s->stream_id = static_cast<std::uint16_t>(i);
     s->decoded = &decoded_;
@@ -60,13 +50,12 @@ void MeasurementMerger::refill(std::size_t i) {
   s.queue.clear();
   s.head = 0;
   while (!s.has_data() && !s.ended) {
-    const std::size_t n = std::fread(chunk_.data(), 1, chunk_.size(), s.file);
+    const std::size_t n = s.bytes->read(chunk_);
     bytes_read_ += n;
     if (n > 0) {
       s.decoder->feed(std::span(chunk_.data(), n), s);
       continue;
     }
-    if (std::ferror(s.file)) throw CommandError("read error on input '" + s.spec.path + "'");
     // End of file: a frame still buffered by the framer was cut off.
     const std::uint64_t skipped_before = s.decoder->counters().skipped_bytes;
     s.decoder->finish(s);

@@ -62,7 +62,7 @@ Logs make_logs(const std::filesystem::path& dir) {
 
 std::vector<InputSpec> specs(const Logs& logs) {
   const auto* fe = &frontends::fusionengine::frontend();
-  return {{logs.imu.string(), fe, false}, {logs.speed.string(), fe, false}};
+  return {{logs.imu.string(), fe, false, std::nullopt, {}, nullptr}, {logs.speed.string(), fe, false, std::nullopt, {}, nullptr}};
 }
 
 TEST(MeasurementMerger, MergesByTimeForAnyChunkSize) {

@@ -3,6 +3,7 @@
 #include <signal.h>
 
 #include <atomic>
+#include <cstdlib>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -54,6 +55,29 @@ TEST(ReplayInterrupt, StopsEarlyWithCompleteOutputsAndSaysWhy) {
   EXPECT_GT(decoder->counters().frames, 0u);
   EXPECT_EQ(decoder->counters().bad_frames, 0u);
   EXPECT_EQ(decoder->counters().skipped_bytes, 0u);
+}
+
+}  // namespace
+}  // namespace navfuse::apps
+
+namespace navfuse::apps {
+namespace {
+
+// Issue 15.6: a pipe is read once; the bytes format detection took must still be replayed.
+TEST(ReplayFromAPipe, LosesNoBytesToFormatDetection) {
+  const auto dir = testing::scratch_dir();
+  const std::string navfuse = std::string(NAVFUSE_BINARY_DIR) + "/apps/navfuse";
+  const std::string log = kDemo + "vn300.vnb";  // 1.7 MB: far more than the 64 KiB probe
+  const std::string from_pipe = (dir / "pipe.p1log").string();
+  const std::string from_file = (dir / "file.p1log").string();
+  ASSERT_EQ(std::system(("cat '" + log + "' | '" + navfuse + "' replay vn:/dev/stdin --rate 0 --quiet --fe-out '" +
+                         from_pipe + "'").c_str()),
+            0);
+  ASSERT_EQ(std::system(("'" + navfuse + "' replay '" + log + "' --rate 0 --quiet --fe-out '" + from_file + "'").c_str()),
+            0);
+  const auto a = testing::read_bytes(from_pipe);
+  EXPECT_GT(a.size(), 1'000'000u);
+  EXPECT_EQ(a, testing::read_bytes(from_file));
 }
 
 }  // namespace
