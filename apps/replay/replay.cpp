@@ -40,7 +40,16 @@ class ReplayObserver final : public FusionObserver {
     if (writer_) return FusionRunner::Solutions::kEvery;
     return accuracy_ ? FusionRunner::Solutions::kPoses : FusionRunner::Solutions::kNone;
   }
+  // --gnss-outage: truth scoring marks the same windows (they start at the first IMU sample).
+  void score_outages(const GnssOutagePlan& plan, const FusionRunner& runner) {
+    plan_ = plan;
+    runner_ = &runner;
+  }
   void on_epoch(const OutputEpoch& epoch, const filter::Engine&) override {
+    if (plan_ && accuracy_ && runner_->first_imu()) {
+      accuracy_->use_outage_plan(*plan_, runner_->first_imu()->time_ns);
+      plan_.reset();
+    }
     if (writer_) writer_->post(epoch);
     if (accuracy_ && epoch.pose_due) accuracy_->add(epoch.solution);
   }
@@ -51,6 +60,8 @@ class ReplayObserver final : public FusionObserver {
 
  private:
   TruthAccuracy* accuracy_;
+  std::optional<GnssOutagePlan> plan_;  // until handed to accuracy_
+  const FusionRunner* runner_ = nullptr;
   std::optional<PoseOutputThread> writer_;
 };
 
@@ -104,6 +115,7 @@ ReplayResult run_replay(const ReplayOptions& options) {
   FusionRunner runner(filter::options_from_config(config),
                       {.output_rate_hz = rate_hz, .solutions = observer.solutions(), .gnss_outages = outages},
                       observer);
+  if (outages) observer.score_outages(*outages, runner);
   ReplayResult result;
   result.summary = fuse_log(merger, runner, observer,
                             {.progress_bar = options.progress, .interrupt = options.interrupt});

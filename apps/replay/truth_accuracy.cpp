@@ -1,5 +1,6 @@
 #include "apps/replay/truth_accuracy.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -93,11 +94,21 @@ void TruthAccuracy::score(const NavSolution& imu_point, const TruthPoint& t) {
                                                t.has_attitude};
   if (all_[0].size() == 0) first_ns_ = s.header.time_ns;
   last_ns_ = s.header.time_ns;
+  bool in_outage = !t.gnss_available;
+  if (plan_) {
+    in_outage = plan_->in_outage(s.header.time_ns, plan_first_ns_);
+    if (in_outage) outage_end_horizontal_m_[plan_->outage_end_ns(s.header.time_ns, plan_first_ns_)] = e[kHorizontal];
+  }
   for (int m = 0; m < kMetricCount; ++m) {
     if (!have[m]) continue;
     all_[m].add(e[m]);
-    if (!t.gnss_available) outage_[m].add(e[m]);
+    if (in_outage) outage_[m].add(e[m]);
   }
+}
+
+void TruthAccuracy::use_outage_plan(const GnssOutagePlan& plan, std::int64_t first_imu_ns) {
+  plan_ = plan;
+  plan_first_ns_ = first_imu_ns;
 }
 
 ErrorSummary TruthAccuracy::summary(int metric, bool outage_only) const {
@@ -121,6 +132,18 @@ nlohmann::ordered_json TruthAccuracy::to_json() const {
   o["samples"] = outage_[0].size();
   for (int m = 0; m < kMetricCount; ++m) {
     if (all_[m].size() > 0 || m == kHorizontal) o[metric_name(m)] = apps::to_json(summary(m, true));
+  }
+  if (plan_) {
+    double sum = 0.0, worst = 0.0;
+    nlohmann::ordered_json each = nlohmann::ordered_json::array();
+    for (const auto& [end_ns, e] : outage_end_horizontal_m_) {
+      sum += e;
+      worst = std::max(worst, e);
+      each.push_back({{"end_time_s", static_cast<double>(end_ns) * 1e-9}, {"horizontal_m", e}});
+    }
+    const std::size_t n = outage_end_horizontal_m_.size();
+    o["end_of_outage_horizontal_m"] = {
+        {"outages", n}, {"mean", n ? sum / static_cast<double>(n) : 0.0}, {"max", worst}, {"each", each}};
   }
   j["gnss_outage"] = o;
   return j;
@@ -146,6 +169,16 @@ void TruthAccuracy::print(std::ostream& os) const {
   if (outage_[0].size() > 0) {
     row("outage horiz_m", summary(kHorizontal, true));
     row("outage vert_m", summary(kVertical, true));
+  }
+  if (plan_ && !outage_end_horizontal_m_.empty()) {
+    double sum = 0.0, worst = 0.0;
+    for (const auto& [end_ns, e] : outage_end_horizontal_m_) {
+      sum += e;
+      worst = std::max(worst, e);
+    }
+    std::snprintf(line, sizeof line, "  end of outage: horizontal error mean %.3f m, max %.3f m over %zu outages\n",
+                  sum / static_cast<double>(outage_end_horizontal_m_.size()), worst, outage_end_horizontal_m_.size());
+    os << line;
   }
 }
 

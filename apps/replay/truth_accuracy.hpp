@@ -17,6 +17,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <cstdint>
 #include <optional>
 #include <ostream>
@@ -25,6 +26,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include "apps/fusion/gnss_outage_plan.hpp"
 #include "apps/replay/error_stats.hpp"
 #include "apps/replay/truth_track.hpp"
 #include "core/measurements/measurements.hpp"
@@ -41,6 +43,10 @@ class TruthAccuracy {
 
   // Called at each pose time (times increasing).
   void add(const NavSolution& s);
+  // replay --gnss-outage: comparisons inside the plan's windows count as outage (instead of the
+  // truth's gnss_available flag), and the horizontal error of the last comparison in each window
+  // is kept as that outage's end-of-outage error. Call before the first add().
+  void use_outage_plan(const GnssOutagePlan& plan, std::int64_t first_imu_ns);
 
   // {"samples", "overlap_s", "reference": {...}, "horizontal_m": {rms, p50, p95, p99, max}, ...,
   //  "gnss_outage": {"samples", "horizontal_m", "vertical_m", ...}}
@@ -64,6 +70,9 @@ class TruthAccuracy {
   std::uint64_t poses_without_truth_ = 0;
   std::uint64_t epochs_unscored_ = 0;  // sparse reference epochs with no navigation pose around them
   std::optional<NavSolution> previous_;  // last navigation pose (sparse references)
+  std::optional<GnssOutagePlan> plan_;
+  std::int64_t plan_first_ns_ = 0;
+  std::map<std::int64_t, double> outage_end_horizontal_m_;  // by window end: the last error in it
 };
 
 }  // namespace navfuse::apps

@@ -146,3 +146,43 @@ TEST(TimeBaseGate, GpsFromAnyStreamDeviceClockOnlyFromTheImuStream) {
 
 }  // namespace
 }  // namespace navfuse::apps
+
+namespace navfuse::apps {
+namespace {
+
+// --gnss-outage scoring: windows from the first IMU sample; the last comparison inside each
+// window is that outage's end error. Truth stands still; the solution drifts north 1 m per s.
+TEST(TruthAccuracy, EndOfOutageErrorIsTheLastErrorInEachWindow) {
+  const auto dir = testing::scratch_dir();
+  std::string csv = "time_gps_s,lat_deg,lon_deg,height_m,vn,ve,vd,roll_deg,pitch_deg,yaw_deg,stationary,gnss_available\n";
+  for (int i = 0; i <= 40; ++i) csv += std::to_string(100 + i) + ".0,45.0,7.0,10.0,0,0,0,0,0,0,0,1\n";
+  testing::write_text(dir / "t.csv", csv);
+  TruthAccuracy acc((dir / "t.csv").string());
+  std::string error;
+  const auto plan = GnssOutagePlan::parse("10:4", error);  // outages 0-4, 10-14, 20-24, 30-34 s
+  ASSERT_TRUE(plan);
+  acc.use_outage_plan(*plan, 100'000'000'000LL);
+  const double lat = 45.0 * rot::kDegToRad;
+  const double a = 6378137.0, e2 = 6.69437999014e-3;
+  const double w = std::sqrt(1.0 - e2 * std::sin(lat) * std::sin(lat));
+  const double m_radius = a * (1.0 - e2) / (w * w * w);
+  for (int i = 0; i < 40; ++i) {  // one pose per second, i metres north at 100 + i s
+    NavSolution s;
+    s.mode = NavMode::kNavigation;
+    s.header.time_ns = (100 + i) * 1'000'000'000LL;
+    s.lat_rad = lat + i / (m_radius + 10.0);
+    s.lon_rad = 7.0 * rot::kDegToRad;
+    s.height_m = 10.0;
+    acc.add(s);
+  }
+  const auto j = acc.to_json()["gnss_outage"]["end_of_outage_horizontal_m"];
+  ASSERT_EQ(j["outages"], 4);
+  // Last pose in each window: 3, 13, 23, 33 s -> 3, 13, 23, 33 m; mean 18 m.
+  EXPECT_NEAR(j["each"][1]["horizontal_m"].get<double>(), 13.0, 1e-3);
+  EXPECT_NEAR(j["mean"].get<double>(), 18.0, 1e-3);
+  EXPECT_NEAR(j["max"].get<double>(), 33.0, 1e-3);
+  EXPECT_EQ(acc.to_json()["gnss_outage"]["samples"], 16);  // 4 poses in each of 4 windows
+}
+
+}  // namespace
+}  // namespace navfuse::apps
