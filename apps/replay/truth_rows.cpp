@@ -57,20 +57,41 @@ std::optional<std::int64_t> parse_time_ns(std::string_view text) {
   return s * 1'000'000'000 + ns;
 }
 
+namespace {
+
+bool looks_like_rtklib(std::string_view line) {
+  const frontends::rtklib::PosLayout layout = frontends::rtklib::default_layout(frontends::rtklib::Coordinates::kLlhDeg);
+  return !line.empty() && (line.front() == '%' || frontends::rtklib::parse_record(line, layout));
+}
+bool looks_like_csv(std::string_view) { return true; }  // last: its reader names a missing column
+
+// The reference formats of --truth, in detection order: the prefix that names each, a look at
+// the first line that recognises it, and its reader.
+struct TruthFormat {
+  std::string_view prefix;
+  bool (*recognises)(std::string_view first_line);
+  std::unique_ptr<TruthRows> (*open)(const std::string& path);
+};
+constexpr TruthFormat kTruthFormats[] = {
+    {"rtklib", &looks_like_rtklib, &open_rtklib_truth},
+    {"nav", &looks_like_nav, &open_nav_truth},
+    {"csv", &looks_like_csv, &open_csv_truth},
+};
+
+}  // namespace
+
 std::unique_ptr<TruthRows> open_truth_rows(const std::string& argument) {
   const auto colon = argument.find(':');
   if (colon != std::string::npos) {
-    const std::string prefix = argument.substr(0, colon);
-    const std::string path = argument.substr(colon + 1);
-    if (prefix == "rtklib") return open_rtklib_truth(path);
-    if (prefix == "nav") return open_nav_truth(path);
-    if (prefix == "csv") return open_csv_truth(path);
+    const std::string_view prefix = std::string_view(argument).substr(0, colon);
+    for (const TruthFormat& f : kTruthFormats) {
+      if (f.prefix == prefix) return f.open(argument.substr(colon + 1));
+    }
   }
   const std::string line = first_line(argument);
-  const frontends::rtklib::PosLayout layout = frontends::rtklib::default_layout(frontends::rtklib::Coordinates::kLlhDeg);
-  if (line.front() == '%' || frontends::rtklib::parse_record(line, layout)) return open_rtklib_truth(argument);
-  if (looks_like_nav(line)) return open_nav_truth(argument);
-  // navfuse's CSV: its own reader names the missing column when it is not one either.
+  for (const TruthFormat& f : kTruthFormats) {
+    if (f.recognises(line)) return f.open(argument);
+  }
   return open_csv_truth(argument);
 }
 
