@@ -31,6 +31,23 @@ FilterOptions options_from_config(const navfuse::config::Config& config) {
   o.gnss_secondary_lever_arm_m = vec(config.gnss.secondary_lever_arm_m);
   o.wheel_lever_arm_m = vec(config.wheel.lever_arm_m);
   o.wheel_speed_std_mps = config.wheel.speed_std_mps;
+
+  // Which constraints hold (Groves 2nd ed. §13.1.3 land-vehicle NHC; §16.2.4 ZUPT for
+  // pedestrians). Only a wheeled vehicle cannot slip sideways; a boat or an aircraft is never
+  // truly at rest, so only land and pedestrian platforms may assume zero velocity at stops.
+  using navfuse::config::Platform;
+  o.land_vehicle = config.platform == Platform::kLand;
+  o.zero_velocity_updates =
+      config.platform == Platform::kLand || config.platform == Platform::kPedestrian;
+  // A walker rarely exceeds 1.5 m/s; at 0.5 m/s an RTK velocity (~0.02 m/s) still gives the
+  // course to ~2 deg, and kinematic_max_course_std_rad refuses a noisier one.
+  constexpr double kPedestrianAlignmentSpeed_mps = 0.5;
+  o.kinematic_alignment_speed_mps = config.alignment.min_speed_mps.value_or(
+      config.platform == Platform::kPedestrian ? kPedestrianAlignmentSpeed_mps
+                                               : o.kinematic_alignment_speed_mps);
+  if (config.alignment.initial_heading_deg) {
+    o.initial_heading_rad = rot::wrap_pi(*config.alignment.initial_heading_deg * rot::kDegToRad);
+  }
   return o;
 }
 

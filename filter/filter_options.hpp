@@ -42,7 +42,7 @@ struct FilterOptions {
   // Odometry and land-vehicle constraints.
   double wheel_speed_std_mps = 0.05;  // used when a measurement reports 0
   double initial_wheel_scale_std = 0.02;
-  bool land_vehicle = true;           // apply the non-holonomic constraint
+  bool land_vehicle = true;           // apply the non-holonomic constraint (platform: land)
   // The point that does not slip sideways or leave the road (the rear-axle centre of a car);
   // nullopt: the wheel lever arm, which is where odometers usually measure.
   std::optional<Eigen::Vector3d> nhc_lever_arm_m;
@@ -59,12 +59,18 @@ struct FilterOptions {
   double stationary_accel_std_mps2 = 0.05;  // ... and specific-force scatter below this
   double stationary_max_speed_mps = 0.3;    // and odometry / GNSS / filter speed below this
   double zupt_std_mps = 0.02;
+  // Apply zero-velocity and zero-rate updates at detected stops (platform: land, pedestrian).
+  // Off, stops are still detected (they keep kinematic alignment and NHC away from rest).
+  bool zero_velocity_updates = true;
 
   // Initialisation and heading alignment (MIP §6.4).
   double level_time_s = 1.0;             // stationary time averaged for levelling
   double level_timeout_s = 10.0;         // level from whatever was seen if never stationary
   std::optional<double> initial_heading_rad;  // configured heading source
   double kinematic_alignment_speed_mps = 2.0;
+  // The course is taken as the heading only when its own noise, velocity std over speed, is
+  // below this: a fast speed from a noisy velocity gives no better course than a slow one.
+  double kinematic_max_course_std_rad = 5.0 * 3.14159265358979323846 / 180.0;
   double kinematic_heading_std_rad = 2.0 * 3.14159265358979323846 / 180.0;
 
   // GNSS control.
@@ -81,7 +87,8 @@ struct FilterOptions {
   double divergence_position_std_m = 1.0e4;
 };
 
-// Options from a loaded configuration: IMU noise keys, mounting, lever arms, wheel noise.
+// Options from a loaded configuration: IMU noise keys, mounting, lever arms, wheel noise, the
+// platform's constraints and the alignment keys.
 FilterOptions options_from_config(const navfuse::config::Config& config);
 
 }  // namespace navfuse::filter

@@ -20,6 +20,14 @@ enum class DeviceProfile { kGeneric, kCv7, kVn300, kUm220, kFusionEngine };
 std::string_view to_string(DeviceProfile p);
 std::optional<DeviceProfile> device_profile_from_string(std::string_view name);
 
+// What carries the sensors; it decides which motion constraints the filter may assume
+// (core/config/platform.cpp). land: non-holonomic constraint, wheel speed, zero-velocity updates;
+// pedestrian (walked or handheld): zero-velocity and zero-rate updates at stops, no NHC;
+// airborne, marine: neither (an aircraft or a boat at "rest" still moves with air or water).
+enum class Platform { kLand, kPedestrian, kAirborne, kMarine };
+std::string_view to_string(Platform p);
+std::optional<Platform> platform_from_string(std::string_view name);
+
 using Vec3 = std::array<double, 3>;
 
 struct ImuConfig {
@@ -44,6 +52,14 @@ struct WheelConfig {
   double speed_std_mps = 0.05;
 };
 
+// Heading initialisation. Unset (nullopt, `~` in YAML) means "the platform's default" or "none".
+struct AlignmentConfig {
+  // Kinematic alignment takes the heading from the GNSS course above this horizontal speed;
+  // unset: 2 m/s, or 0.5 m/s on a pedestrian platform.
+  std::optional<double> min_speed_mps;
+  std::optional<double> initial_heading_deg;  // known heading at start (deg from north)
+};
+
 struct OutputConfig {
   double rate_hz = 100;  // pose output rate (0 = every IMU sample)
 };
@@ -52,9 +68,11 @@ struct OutputConfig {
 // actually starts from are defaults_for(profile) (core/config/device_profiles.cpp).
 struct Config {
   DeviceProfile device = DeviceProfile::kGeneric;
+  Platform platform = Platform::kLand;
   ImuConfig imu;
   GnssConfig gnss;
   WheelConfig wheel;
+  AlignmentConfig alignment;
   OutputConfig output;
 };
 
@@ -84,14 +102,19 @@ enum class ValueCheck {
   kAny,          // any finite number (angles, lever arms)
   kNonNegative,  // >= 0 (noise densities, uncertainties, rates where 0 has a meaning)
   kPositive,     // > 0 (correlation times)
+  kAngleDeg,     // within [-360, 360] deg (a heading written as 0..360 or -180..180)
+  kSpeedMps,     // > 0 and at most 100 m/s (a threshold a vehicle can reach)
 };
 
 struct KeyBinding {
   std::string_view key;   // dotted YAML path, e.g. "imu.gyro_arw_deg_rthr"
   std::string_view help;  // meaning and unit; printed as a comment by to_yaml()
   ValueCheck check;
-  // Where the value lives: a scalar, or a fixed-length array of 3 (YAML flow sequence).
-  std::variant<double* (*)(Config&), Vec3* (*)(Config&)> target;
+  // Where the value lives: a scalar, a fixed-length array of 3 (YAML flow sequence), an optional
+  // scalar (`~` = unset) or the platform name.
+  std::variant<double* (*)(Config&), Vec3* (*)(Config&), std::optional<double>* (*)(Config&),
+               Platform* (*)(Config&)>
+      target;
 };
 
 std::span<const KeyBinding> key_table();

@@ -11,6 +11,8 @@ namespace {
   KeyBinding { #path, help, ValueCheck::check, +[](Config& c) { return &c.path; } }
 
 const KeyBinding kKeys[] = {
+    NAVFUSE_CONFIG_KEY(platform, kAny,
+                       "land | pedestrian | airborne | marine: which motion constraints apply"),
     NAVFUSE_CONFIG_KEY(imu.mounting_rpy_deg, kAny,
                        "sensor -> vehicle roll, pitch, yaw (deg, 3-2-1)"),
     NAVFUSE_CONFIG_KEY(imu.gyro_arw_deg_rthr, kNonNegative, "gyro angle random walk (deg/sqrt(h))"),
@@ -34,6 +36,10 @@ const KeyBinding kKeys[] = {
     NAVFUSE_CONFIG_KEY(wheel.lever_arm_m, kAny,
                        "speed measurement point (e.g. rear axle centre), vehicle frame FRD (m)"),
     NAVFUSE_CONFIG_KEY(wheel.speed_std_mps, kNonNegative, "wheel speed noise, 1 sigma (m/s)"),
+    NAVFUSE_CONFIG_KEY(alignment.min_speed_mps, kSpeedMps,
+                       "GNSS speed for heading from course (m/s; ~: 2, pedestrian 0.5)"),
+    NAVFUSE_CONFIG_KEY(alignment.initial_heading_deg, kAngleDeg,
+                       "known heading at start (deg from north; ~: align by itself)"),
     NAVFUSE_CONFIG_KEY(output.rate_hz, kNonNegative, "pose output rate (Hz, 0 = every IMU sample)"),
 };
 

@@ -179,6 +179,24 @@ class Loader {
       *(*scalar)(config) = number(node, std::string(binding.key), binding.check);
       return;
     }
+    if (auto optional = std::get_if<std::optional<double>* (*)(Config&)>(&binding.target)) {
+      std::optional<double>& out = *(*optional)(config);
+      if (node.IsNull()) {
+        out.reset();  // `~`: back to unset
+      } else {
+        out = number(node, std::string(binding.key), binding.check);
+      }
+      return;
+    }
+    if (auto platform = std::get_if<Platform* (*)(Config&)>(&binding.target)) {
+      const auto p = node.IsScalar() ? platform_from_string(node.Scalar()) : std::nullopt;
+      if (!p) {
+        fail(node, binding.key,
+             "expected one of land, pedestrian, airborne, marine, got " + describe(node));
+      }
+      *(*platform)(config) = *p;
+      return;
+    }
     Vec3& out = *std::get<Vec3* (*)(Config&)>(binding.target)(config);
     if (!node.IsSequence() || node.size() != out.size()) {
       fail(node, binding.key, "expected a list of 3 numbers, got " + describe(node));
@@ -218,6 +236,12 @@ class Loader {
     }
     if (check == ValueCheck::kPositive && !(value > 0)) {
       fail(node, key, "must be > 0, got " + node.Scalar());
+    }
+    if (check == ValueCheck::kAngleDeg && std::abs(value) > 360.0) {
+      fail(node, key, "must be within [-360, 360] deg, got " + node.Scalar());
+    }
+    if (check == ValueCheck::kSpeedMps && !(value > 0 && value <= 100.0)) {
+      fail(node, key, "must be > 0 and <= 100 m/s, got " + node.Scalar());
     }
     return value;
   }

@@ -47,6 +47,11 @@ std::string to_yaml(const Config& config) {
     out += std::string(2 * depth, ' ') + std::string(parts.back()) + ": ";
     if (auto scalar = std::get_if<double* (*)(Config&)>(&binding.target)) {
       out += format_number(*(*scalar)(copy));
+    } else if (auto optional = std::get_if<std::optional<double>* (*)(Config&)>(&binding.target)) {
+      const std::optional<double>& v = *(*optional)(copy);
+      out += v ? format_number(*v) : std::string("~");
+    } else if (auto platform = std::get_if<Platform* (*)(Config&)>(&binding.target)) {
+      out += to_string(*(*platform)(copy));
     } else {
       const Vec3& v = *std::get<Vec3* (*)(Config&)>(binding.target)(copy);
       // Appended piecewise: `"[" + std::string` trips GCC 12's false -Wrestrict (GCC bug 105329).

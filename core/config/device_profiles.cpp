@@ -18,21 +18,15 @@
 //          never more, than it deserves.
 // Turn-on bias uncertainties are typical values for each class (datasheets rarely give them).
 // Correlation times: 300 s for the tactical-grade parts, 100 s for automotive MEMS (typical).
-#include <algorithm>
-#include <cctype>
 #include <string>
 
 #include "core/config/config.hpp"
+#include "core/config/name_table.hpp"
 
 namespace navfuse::config {
 namespace {
 
-struct ProfileName {
-  DeviceProfile profile;
-  std::string_view name;
-};
-
-constexpr ProfileName kNames[] = {
+constexpr EnumName<DeviceProfile> kNames[] = {
     {DeviceProfile::kCv7, "cv7"},
     {DeviceProfile::kVn300, "vn300"},
     {DeviceProfile::kUm220, "um220"},
@@ -57,20 +51,11 @@ ImuConfig imu_noise(double arw, double gyro_bi, double gyro_tau, double vrw, dou
 }  // namespace
 
 std::string_view to_string(DeviceProfile p) {
-  for (const auto& n : kNames) {
-    if (n.profile == p) return n.name;
-  }
-  return "generic";
+  return name_in<DeviceProfile>(kNames, p, "generic");
 }
 
 std::optional<DeviceProfile> device_profile_from_string(std::string_view name) {
-  std::string lower(name);
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
-  for (const auto& n : kNames) {
-    if (n.name == lower) return n.profile;
-  }
-  return std::nullopt;
+  return value_in<DeviceProfile>(kNames, name);
 }
 
 Config defaults_for(DeviceProfile profile) {

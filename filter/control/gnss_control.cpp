@@ -91,10 +91,11 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssVelocity& m,
     c.x.vel_ned_mps = m.vel_ned_mps;
     c.ekf.reset_states(sx::kVel, cov);
     c.gnss.last_velocity_ns = now;
-    if (speed >= o.kinematic_alignment_speed_mps) {
-      // Kinematic alignment (MIP §6.4): a land vehicle moving forward points along its course.
-      // The yaw uncertainty is the course noise plus an allowance for sideslip and mounting.
-      const double course_std = std::sqrt(0.5 * (cov(0, 0) + cov(1, 1))) / speed;
+    // Kinematic alignment (MIP §6.4): a vehicle or walker moving forward points along its
+    // course. The course noise is the horizontal velocity std over the speed; the yaw
+    // uncertainty adds an allowance for sideslip and mounting.
+    const double course_std = std::sqrt(0.5 * (cov(0, 0) + cov(1, 1))) / speed;
+    if (speed >= o.kinematic_alignment_speed_mps && course_std <= o.kinematic_max_course_std_rad) {
       set_heading(c, std::atan2(m.vel_ned_mps.y(), m.vel_ned_mps.x()),
                   std::hypot(course_std, o.kinematic_heading_std_rad));
       if (c.gnss.have_fix &&

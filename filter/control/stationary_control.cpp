@@ -50,7 +50,7 @@ void update_stationary(FilterCore& c, const FilterOptions& o, const ImuIncrement
   s.sum_rate.setZero();
   s.sum_force.setZero();
   s.sum_force_sq = 0.0;
-  if (!s.stationary) return;
+  if (!s.stationary || !o.zero_velocity_updates) return;
 
   if (c.apply(o, zero_velocity_observation(c.view(0.0), o.zupt_std_mps), o.chi2_gate[2]).used) {
     ++c.mode.zupts;

@@ -10,19 +10,12 @@
 #include <unistd.h>
 
 #include "core/config/config.hpp"
+#include "tests/core/config/config_error_of.hpp"
 
 namespace navfuse::config {
 namespace {
 
-// The message of the ConfigError `yaml` raises ("" when it loads).
-std::string error_of(const std::string& yaml) {
-  try {
-    load_from_string(yaml, "config.yaml");
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::error_of;
 
 TEST(ConfigLoader, EveryKeyIsParsed) {
   // Each key gets a value no profile uses, so reading it back proves the binding.
