@@ -1,5 +1,6 @@
 #include "apps/replay/replay.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -64,6 +65,32 @@ class ReplayObserver final : public FusionObserver {
   const FusionRunner* runner_ = nullptr;
   std::optional<PoseOutputThread> writer_;
 };
+
+// The one-line reason a replay produced nothing useful, or "" when it did (see ReplayResult).
+std::string replay_failure(const Summary& summary, std::uint64_t imu_fused, const std::vector<NavMode>& modes) {
+  for (const InputSummary& in : summary.inputs) {
+    if (in.counters.frames == 0) {
+      return "no frame decoded from " + in.format + ":" + in.path + " (" + std::to_string(in.counters.bytes) +
+             " bytes, " + std::to_string(in.counters.skipped_bytes) +
+             " skipped): is it empty, or the format prefix wrong?";
+    }
+  }
+  if (imu_fused == 0) {
+    const KindSummary& imu = summary.kinds[static_cast<std::size_t>(MeasurementKind::kImu)];
+    if (imu.decoded == 0) return "the inputs hold no IMU sample (a GNSS-only log?): nothing to navigate with";
+    std::string reasons;
+    for (const auto& [reason, n] : imu.rejected) reasons += (reasons.empty() ? "" : ", ") + reason + ": " + std::to_string(n);
+    return "none of the " + std::to_string(imu.decoded) + " IMU samples was fused (rejected: " + reasons + ")";
+  }
+  const bool left_initialization = std::any_of(modes.begin(), modes.end(), [](NavMode m) {
+    return m != NavMode::kInvalid && m != NavMode::kInitializing;
+  });
+  if (!left_initialization) {
+    return "the filter never left initialization over " + std::to_string(imu_fused) +
+           " IMU samples (no attitude, no navigation)";
+  }
+  return "";
+}
 
 }  // namespace
 
@@ -139,6 +166,12 @@ ReplayResult run_replay(const ReplayOptions& options) {
     result.accuracy_text = text.str();
   }
   result.truncated_inputs = merger.truncated_inputs();
+  result.failure = replay_failure(summary, result.imu_samples, runner.engine().modes_reached());
+  if (!result.failure.empty()) summary.extra["failure"] = result.failure;
+  const auto& imu_rejected = summary.kind(MeasurementKind::kImu).rejected;
+  if (const auto it = imu_rejected.find("time_backwards"); it != imu_rejected.end()) {
+    result.imu_time_backwards = it->second;
+  }
   return result;
 }
 

@@ -43,6 +43,13 @@ struct ReplayResult {
   std::uint64_t poses = 0;        // pose epochs written
   std::vector<std::string> truncated_inputs;
   std::string accuracy_text;      // printable accuracy table (with --truth)
+  // Why the run produced nothing useful, one line (empty: it did): no IMU sample fused (an input
+  // with no frame decoded, a log without IMU, every sample rejected), or the filter never left
+  // initialization. `navfuse replay` exits 2 with it, after the summary.
+  std::string failure;
+  // IMU samples rejected because their time went back (a log concatenated with itself, a clock
+  // reset): the filter skipped them, so the outputs miss that part. Warned about on stderr.
+  std::uint64_t imu_time_backwards = 0;
 };
 
 // Throws CommandError with a one-line reason on bad input or config.

@@ -47,11 +47,17 @@ int run(ReplayArgs& args) {
     }
     std::cout << result.accuracy_text;
   }
+  if (result.imu_time_backwards > 0) {
+    std::cerr << "navfuse: warning: " << result.imu_time_backwards
+              << " IMU samples rejected as time_backwards (their time went back: a log concatenated "
+                 "with itself, or a clock reset?); the outputs do not cover them\n";
+  }
   if (result.summary.interrupted_by != 0) {
     std::cerr << "navfuse: replay interrupted by signal " << result.summary.interrupted_by
               << ": outputs and summary cover the part processed\n";
     return 128 + result.summary.interrupted_by;
   }
+  if (!result.failure.empty()) throw CommandError("replay produced nothing useful: " + result.failure, 2);
   return 0;
 }
 

@@ -152,7 +152,13 @@ nlohmann::ordered_json TruthAccuracy::to_json() const {
 void TruthAccuracy::print(std::ostream& os) const {
   char line[160];
   os << "accuracy against " << truth_.format() << " reference at the "
-     << (truth_.point() == ReferencePoint::kAntenna ? "antenna" : "IMU") << " (" << samples()
+     << (truth_.point() == ReferencePoint::kAntenna ? "antenna" : "IMU");
+  if (samples() == 0) {
+    // Rows of zeros would read as a perfect score.
+    os << ": no poses in navigation to score\n";
+    return;
+  }
+  os << " (" << samples()
      << (truth_.sparse() ? " reference epochs" : " poses") << " in navigation";
   if (outage_[0].size() > 0) os << ", " << outage_[0].size() << " of them in GNSS outages";
   os << "):\n";

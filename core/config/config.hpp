@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -98,18 +99,22 @@ std::string to_yaml(const Config& config);
 // Every YAML key except `device` is one row binding a dotted path to a Config member; the
 // loader, the unknown-key check and to_yaml() all walk this table, so adding a key is one row.
 
-enum class ValueCheck {
-  kAny,          // any finite number (angles, lever arms)
-  kNonNegative,  // >= 0 (noise densities, uncertainties, rates where 0 has a meaning)
-  kPositive,     // > 0 (correlation times)
-  kAngleDeg,     // within [-360, 360] deg (a heading written as 0..360 or -180..180)
-  kSpeedMps,     // > 0 and at most 100 m/s (a threshold a vehicle can reach)
+// The range a value must lie in to describe a real installation (non-finite values never do).
+// The loader refuses a value outside it, naming the key: such values do not tune the solution,
+// they wreck it (a 1e9 m lever arm gave a 1e9 m error reported with a 1.5 m std).
+struct ValueRange {
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  bool min_exclusive = false;  // (min, max] rather than [min, max]
+
+  bool contains(double v) const { return (min_exclusive ? v > min : v >= min) && v <= max; }
+  std::string describe() const;  // ">= 0", "> 0", "in [-100, 100]", "in (0, 100]"
 };
 
 struct KeyBinding {
   std::string_view key;   // dotted YAML path, e.g. "imu.gyro_arw_deg_rthr"
   std::string_view help;  // meaning and unit; printed as a comment by to_yaml()
-  ValueCheck check;
+  ValueRange range;
   // Where the value lives: a scalar, a fixed-length array of 3 (YAML flow sequence), an optional
   // scalar (`~` = unset) or the platform name.
   std::variant<double* (*)(Config&), Vec3* (*)(Config&), std::optional<double>* (*)(Config&),

@@ -1,41 +1,65 @@
 // The table of YAML keys (DESIGN.md "Configuration", contract) and the Config members they bind.
 // Adding a key: add the member to config.hpp and one NAVFUSE_CONFIG_KEY row here. The macro
 // spells the YAML path and the member path with the same tokens, so the two cannot drift apart.
+#include <cstdio>
+#include <limits>
+
 #include "core/config/config.hpp"
 
 namespace navfuse::config {
 namespace {
 
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr ValueRange kNonNegative{0.0, kInf};
+// Standard deviations, noise densities (and correlation times): 0 claims a perfect sensor, which makes the filter
+// trust it absolutely (singular covariance, every other measurement rejected against it).
+constexpr ValueRange kPositive{0.0, kInf, true};
+// Mounting angles: one turn either way holds every rotation; 1e20 deg is a units or typing slip.
+constexpr ValueRange kAngleDeg{-360.0, 360.0};
+// Lever arms: no vehicle or vessel an IMU is fitted to puts an antenna or wheel 100 m away;
+// beyond it the value is in the wrong unit (mm for m) or garbage.
+constexpr ValueRange kLeverArmM{-100.0, 100.0};
+// Turn-on bias priors: 1e5 deg/h (28 deg/s) is beyond the bias of any gyro a navigation filter can
+// use (consumer MEMS: a few deg/s) and 100 m/s^2 (10 g) beyond any accelerometer bias; larger
+// priors only overflow the covariance (1e300 squared is inf, then NaN everywhere).
+constexpr ValueRange kGyroBiasStdDegHr{0.0, 1e5, true};
+constexpr ValueRange kAccelBiasStdMps2{0.0, 100.0, true};
+
 // `+[]` turns the capture-less lambda into a plain function pointer (constant-initialisable).
-#define NAVFUSE_CONFIG_KEY(path, check, help) \
-  KeyBinding { #path, help, ValueCheck::check, +[](Config& c) { return &c.path; } }
+#define NAVFUSE_CONFIG_KEY(path, range, help) \
+  KeyBinding { #path, help, range, +[](Config& c) { return &c.path; } }
+
+// Kinematic-alignment speed threshold: above 0 (course needs motion), at most 100 m/s (a speed
+// the vehicle can reach, or alignment never happens).
+constexpr ValueRange kSpeedMps{0.0, 100.0, true};
+constexpr ValueRange kAny{-kInf, kInf};
 
 const KeyBinding kKeys[] = {
     NAVFUSE_CONFIG_KEY(platform, kAny,
                        "land | pedestrian | airborne | marine: which motion constraints apply"),
-    NAVFUSE_CONFIG_KEY(imu.mounting_rpy_deg, kAny,
+    NAVFUSE_CONFIG_KEY(imu.mounting_rpy_deg, kAngleDeg,
                        "sensor -> vehicle roll, pitch, yaw (deg, 3-2-1)"),
-    NAVFUSE_CONFIG_KEY(imu.gyro_arw_deg_rthr, kNonNegative, "gyro angle random walk (deg/sqrt(h))"),
+    NAVFUSE_CONFIG_KEY(imu.gyro_arw_deg_rthr, kPositive, "gyro angle random walk (deg/sqrt(h))"),
     NAVFUSE_CONFIG_KEY(imu.gyro_bias_instability_deg_hr, kNonNegative,
                        "gyro in-run bias instability (deg/h)"),
     NAVFUSE_CONFIG_KEY(imu.gyro_bias_corr_time_s, kPositive,
                        "gyro bias Gauss-Markov correlation time (s)"),
-    NAVFUSE_CONFIG_KEY(imu.accel_vrw_mps_rthr, kNonNegative,
+    NAVFUSE_CONFIG_KEY(imu.accel_vrw_mps_rthr, kPositive,
                        "accel velocity random walk (m/s/sqrt(h))"),
     NAVFUSE_CONFIG_KEY(imu.accel_bias_instability_mps2, kNonNegative,
                        "accel in-run bias instability (m/s^2)"),
     NAVFUSE_CONFIG_KEY(imu.accel_bias_corr_time_s, kPositive,
                        "accel bias Gauss-Markov correlation time (s)"),
-    NAVFUSE_CONFIG_KEY(imu.initial_gyro_bias_std_deg_hr, kNonNegative,
+    NAVFUSE_CONFIG_KEY(imu.initial_gyro_bias_std_deg_hr, kGyroBiasStdDegHr,
                        "turn-on gyro bias uncertainty, 1 sigma (deg/h)"),
-    NAVFUSE_CONFIG_KEY(imu.initial_accel_bias_std_mps2, kNonNegative,
+    NAVFUSE_CONFIG_KEY(imu.initial_accel_bias_std_mps2, kAccelBiasStdMps2,
                        "turn-on accel bias uncertainty, 1 sigma (m/s^2)"),
-    NAVFUSE_CONFIG_KEY(gnss.lever_arm_m, kAny, "primary antenna, vehicle frame FRD (m)"),
-    NAVFUSE_CONFIG_KEY(gnss.secondary_lever_arm_m, kAny,
+    NAVFUSE_CONFIG_KEY(gnss.lever_arm_m, kLeverArmM, "primary antenna, vehicle frame FRD (m)"),
+    NAVFUSE_CONFIG_KEY(gnss.secondary_lever_arm_m, kLeverArmM,
                        "secondary antenna for dual-antenna heading, vehicle frame FRD (m)"),
-    NAVFUSE_CONFIG_KEY(wheel.lever_arm_m, kAny,
+    NAVFUSE_CONFIG_KEY(wheel.lever_arm_m, kLeverArmM,
                        "speed measurement point (e.g. rear axle centre), vehicle frame FRD (m)"),
-    NAVFUSE_CONFIG_KEY(wheel.speed_std_mps, kNonNegative, "wheel speed noise, 1 sigma (m/s)"),
+    NAVFUSE_CONFIG_KEY(wheel.speed_std_mps, kPositive, "wheel speed noise, 1 sigma (m/s)"),
     NAVFUSE_CONFIG_KEY(alignment.min_speed_mps, kSpeedMps,
                        "GNSS speed for heading from course (m/s; ~: 2, pedestrian 0.5)"),
     NAVFUSE_CONFIG_KEY(alignment.initial_heading_deg, kAngleDeg,
@@ -48,5 +72,15 @@ const KeyBinding kKeys[] = {
 }  // namespace
 
 std::span<const KeyBinding> key_table() { return kKeys; }
+
+std::string ValueRange::describe() const {
+  char text[96];
+  if (max == kInf) {
+    std::snprintf(text, sizeof text, "%s %g", min_exclusive ? ">" : ">=", min);
+  } else {
+    std::snprintf(text, sizeof text, "in %c%g, %g]", min_exclusive ? '(' : '[', min, max);
+  }
+  return text;
+}
 
 }  // namespace navfuse::config

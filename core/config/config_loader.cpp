@@ -113,7 +113,9 @@ class Loader {
       throw ConfigError(source_ + ":" + std::to_string(e.mark.line + 1) + ":" +
                         std::to_string(e.mark.column + 1) + ": invalid YAML: " + e.msg);
     }
-    if (root.IsNull()) return defaults_for(DeviceProfile::kGeneric);  // empty file
+    // An empty (or comment-only) file is more likely a wrong or truncated file than a wish for
+    // the generic defaults; omitting --config gives the device profile's defaults.
+    if (root.IsNull()) throw ConfigError(source_ + ": empty configuration: give at least `device:`");
     if (!root.IsMap()) {
       throw ConfigError(source_ + ": expected a mapping of keys at the top level, got " +
                         describe(root) + line_of(root));
@@ -176,7 +178,7 @@ class Loader {
 
   void assign(const KeyBinding& binding, const YAML::Node& node, Config& config) {
     if (auto scalar = std::get_if<double* (*)(Config&)>(&binding.target)) {
-      *(*scalar)(config) = number(node, std::string(binding.key), binding.check);
+      *(*scalar)(config) = number(node, std::string(binding.key), binding.range);
       return;
     }
     if (auto optional = std::get_if<std::optional<double>* (*)(Config&)>(&binding.target)) {
@@ -184,7 +186,7 @@ class Loader {
       if (node.IsNull()) {
         out.reset();  // `~`: back to unset
       } else {
-        out = number(node, std::string(binding.key), binding.check);
+        out = number(node, std::string(binding.key), binding.range);
       }
       return;
     }
@@ -203,11 +205,11 @@ class Loader {
     }
     for (std::size_t i = 0; i < out.size(); ++i) {
       out[i] = number(node[i], std::string(binding.key) + "[" + std::to_string(i) + "]",
-                      binding.check);
+                      binding.range);
     }
   }
 
-  double number(const YAML::Node& node, const std::string& key, ValueCheck check) {
+  double number(const YAML::Node& node, const std::string& key, const ValueRange& range) {
     if (!node.IsScalar()) fail(node, key, "expected a number, got " + describe(node));
     // A quoted scalar ("5") is a string to YAML; taking it as a number would hide a typo'd
     // quote, so it is a type error like any other string. yaml-cpp tags quoted scalars "!".
@@ -231,18 +233,7 @@ class Loader {
     if (ec != std::errc() || end != text.data() + text.size()) {
       fail(node, key, "expected a number, got " + describe(node));
     }
-    if (check == ValueCheck::kNonNegative && value < 0) {
-      fail(node, key, "must be >= 0, got " + node.Scalar());
-    }
-    if (check == ValueCheck::kPositive && !(value > 0)) {
-      fail(node, key, "must be > 0, got " + node.Scalar());
-    }
-    if (check == ValueCheck::kAngleDeg && std::abs(value) > 360.0) {
-      fail(node, key, "must be within [-360, 360] deg, got " + node.Scalar());
-    }
-    if (check == ValueCheck::kSpeedMps && !(value > 0 && value <= 100.0)) {
-      fail(node, key, "must be > 0 and <= 100 m/s, got " + node.Scalar());
-    }
+    if (!range.contains(value)) fail(node, key, "must be " + range.describe() + ", got " + node.Scalar());
     return value;
   }
 

@@ -87,12 +87,13 @@ TEST(ConfigLoader, ProfileDefaultsThenOverrides) {
             defaults_for(DeviceProfile::kUm220).imu.gyro_bias_instability_deg_hr);
 }
 
-TEST(ConfigLoader, EmptyFileGivesGenericDefaults) {
-  const Config generic = defaults_for(DeviceProfile::kGeneric);
-  for (const char* text : {"", "# only a comment\n", "imu:\n"}) {
-    const Config c = load_from_string(text);
-    EXPECT_EQ(to_yaml(c), to_yaml(generic)) << "input: " << text;
+TEST(ConfigLoader, EmptyFileIsRefused) {
+  // An empty or comment-only file is a wrong or cut file more often than a wish for defaults.
+  for (const char* text : {"", "# only a comment\n", "\n\n"}) {
+    EXPECT_EQ(error_of(text), "config.yaml: empty configuration: give at least `device:`") << "input: " << text;
   }
+  // A section with every key commented out still means "the defaults of this section".
+  EXPECT_EQ(to_yaml(load_from_string("imu:\n")), to_yaml(defaults_for(DeviceProfile::kGeneric)));
   const Config only_device = load_from_string("device: fusionengine\n");
   EXPECT_EQ(to_yaml(only_device), to_yaml(defaults_for(DeviceProfile::kFusionEngine)));
 }
@@ -157,7 +158,7 @@ TEST(ConfigLoader, WrongArrayLengths) {
 
 TEST(ConfigLoader, NegativeAndNonFiniteValues) {
   EXPECT_NE(error_of("imu: {accel_vrw_mps_rthr: -0.1}")
-                .find("imu.accel_vrw_mps_rthr: must be >= 0, got -0.1"),
+                .find("imu.accel_vrw_mps_rthr: must be > 0, got -0.1"),
             std::string::npos);
   EXPECT_NE(error_of("imu: {gyro_bias_corr_time_s: 0}")
                 .find("imu.gyro_bias_corr_time_s: must be > 0, got 0"),
@@ -172,6 +173,59 @@ TEST(ConfigLoader, NegativeAndNonFiniteValues) {
   EXPECT_NE(error_of("output: {rate_hz: 1e999}").find("out of range"), std::string::npos);
   // Lever arms and mounting angles may be negative.
   EXPECT_EQ(error_of("imu: {mounting_rpy_deg: [-180, -90, -1]}"), "");
+}
+
+// Values that would wreck the solution rather than tune it (issue 15 item 8), each refused with
+// the key named.
+TEST(ConfigLoader, ValuesOutsideThePhysicalRangeAreRefused) {
+  EXPECT_EQ(error_of("gnss:\n  lever_arm_m: [1e9, 0, 0]\n"),
+            "config.yaml: gnss.lever_arm_m[0]: must be in [-100, 100], got 1e9 (line 2)");
+  EXPECT_NE(error_of("gnss: {secondary_lever_arm_m: [0, 0, -100.5]}")
+                .find("gnss.secondary_lever_arm_m[2]: must be in [-100, 100], got -100.5"),
+            std::string::npos);
+  EXPECT_NE(error_of("wheel: {lever_arm_m: [0, 101, 0]}").find("wheel.lever_arm_m[1]: must be in [-100, 100]"),
+            std::string::npos);
+  EXPECT_EQ(error_of("gnss: {lever_arm_m: [100, -100, 0.5]}"), "");  // the bounds themselves are fine
+
+  EXPECT_NE(error_of("wheel: {speed_std_mps: 0}").find("wheel.speed_std_mps: must be > 0, got 0"),
+            std::string::npos);
+  EXPECT_NE(error_of("imu: {gyro_arw_deg_rthr: 0}").find("imu.gyro_arw_deg_rthr: must be > 0, got 0"),
+            std::string::npos);
+  EXPECT_NE(error_of("imu: {accel_vrw_mps_rthr: 0.0}").find("imu.accel_vrw_mps_rthr: must be > 0"),
+            std::string::npos);
+
+  EXPECT_NE(error_of("imu: {mounting_rpy_deg: [0, 0, 1e20]}")
+                .find("imu.mounting_rpy_deg[2]: must be in [-360, 360], got 1e20"),
+            std::string::npos);
+  EXPECT_NE(error_of("imu: {mounting_rpy_deg: [-360.1, 0, 0]}").find("imu.mounting_rpy_deg[0]"),
+            std::string::npos);
+  EXPECT_EQ(error_of("imu: {mounting_rpy_deg: [-360, 360, 0]}"), "");
+
+  EXPECT_NE(error_of("imu: {initial_gyro_bias_std_deg_hr: 1e300}")
+                .find("imu.initial_gyro_bias_std_deg_hr: must be in (0, 100000], got 1e300"),
+            std::string::npos);
+  EXPECT_NE(error_of("imu: {initial_gyro_bias_std_deg_hr: 0}").find("imu.initial_gyro_bias_std_deg_hr: must be"),
+            std::string::npos);
+  EXPECT_EQ(error_of("imu: {initial_gyro_bias_std_deg_hr: 1e5}"), "");
+  EXPECT_NE(error_of("imu: {initial_accel_bias_std_mps2: 101}")
+                .find("imu.initial_accel_bias_std_mps2: must be in (0, 100], got 101"),
+            std::string::npos);
+  EXPECT_EQ(error_of("imu: {initial_accel_bias_std_mps2: 100}"), "");
+
+  // Non-finite numbers are refused for every key, whatever its range.
+  for (const KeyBinding& b : key_table()) {
+    if (std::holds_alternative<Platform* (*)(Config&)>(b.target)) continue;  // a name, not a number
+    const std::string key(b.key);
+    const std::string section = key.substr(0, key.find('.'));
+    const std::string name = key.substr(key.find('.') + 1);
+    const bool list = std::holds_alternative<Vec3* (*)(Config&)>(b.target);
+    for (const char* bad : {".nan", ".inf", "-.inf"}) {
+      const std::string value = list ? std::string("[0, ") + bad + ", 0]" : std::string(bad);
+      const std::string e = error_of(section + ": {" + name + ": " + value + "}");
+      EXPECT_NE(e.find(key), std::string::npos) << key << " = " << value << ": " << e;
+      EXPECT_NE(e.find("expected a finite number"), std::string::npos) << key << " = " << value << ": " << e;
+    }
+  }
 }
 
 TEST(ConfigLoader, DuplicateKeyAndBadYaml) {

@@ -46,17 +46,17 @@ TEST(AlignmentKeys, UnsetByDefaultAndParsed) {
 
 TEST(AlignmentKeys, RefusesNonFiniteAndOutOfRangeNamingTheKey) {
   EXPECT_EQ(error_of("alignment:\n  min_speed_mps: 0\n"),
-            "config.yaml: alignment.min_speed_mps: must be > 0 and <= 100 m/s, got 0 (line 2)");
+            "config.yaml: alignment.min_speed_mps: must be in (0, 100], got 0 (line 2)");
   const struct {
     const char* yaml;
     const char* message;
   } refused[] = {
-      {"alignment: {min_speed_mps: -1}", "alignment.min_speed_mps: must be > 0"},
-      {"alignment: {min_speed_mps: 250}", "alignment.min_speed_mps: must be > 0 and <= 100 m/s, got 250"},
+      {"alignment: {min_speed_mps: -1}", "alignment.min_speed_mps: must be in (0, 100], got -1"},
+      {"alignment: {min_speed_mps: 250}", "alignment.min_speed_mps: must be in (0, 100], got 250"},
       {"alignment: {min_speed_mps: .nan}", "alignment.min_speed_mps: expected a finite number"},
       {"alignment: {initial_heading_deg: .inf}", "alignment.initial_heading_deg: expected a finite number"},
       {"alignment: {initial_heading_deg: 361}",
-       "alignment.initial_heading_deg: must be within [-360, 360] deg, got 361"},
+       "alignment.initial_heading_deg: must be in [-360, 360], got 361"},
       {"alignment: {initial_heading_deg: north}",
        "alignment.initial_heading_deg: expected a number, got \"north\""},
   };
