@@ -68,8 +68,10 @@ void add_replay_command(CLI::App& root, int& exit_code) {
   ReplayOptions& o = args->options;
   CLI::App* sub = root.add_subcommand("replay", "Replay logs through the filter as fast as possible");
   sub->add_option("INPUT", o.inputs, "[FORMAT:]PATH, several merged by measurement time; FORMAT one of fe, mip, vn, "
-                                     "unicore, rtklib, imutxt (detected when omitted)")
-      ->required();
+                                     "unicore, rtklib, imutxt (detected when omitted)");
+  sub->add_option("--recording", o.recording_dir,
+                  "Replay a `navfuse run --record DIR` recording in the live run's order (with its config "
+                  "unless --config is given): the live run's outputs again, byte for byte");
   add_gps_week_option(sub, o.gps_week);
   sub->add_option("--config", o.config_path, "YAML configuration (default: the device profile of the first input)");
   sub->add_option("--fe-out", o.fe_out, "Write FusionEngine Pose/PoseAux/GNSSInfo/IMUOutput to this file");

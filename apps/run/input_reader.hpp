@@ -9,12 +9,16 @@
 //    again.
 //  - Without a FORMAT: prefix the format is detected from the first bytes received.
 //  - A live input never waits for the filter: when the queue is full the measurement is dropped
-//    and counted. A file input is not live, so it waits for room instead of losing data.
+//    and counted. A file input is not live, so it waits for room instead of losing data, and
+//    with --realtime it is also paced by its own timestamps (realtime_pacer.hpp).
+//  - Each read is decoded first, then its measurements are queued as one block; with --record the
+//    read is written, numbered, under the recorder's lock that keeps that order (input_recorder.hpp).
 #pragma once
 
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -22,6 +26,8 @@
 
 #include "apps/run/arrived_measurement.hpp"
 #include "apps/run/input_endpoint.hpp"
+#include "apps/run/input_recorder.hpp"
+#include "apps/run/realtime_pacer.hpp"
 #include "core/io/transport.hpp"
 
 namespace navfuse::apps {
@@ -40,7 +46,9 @@ struct InputCounters {
 class InputReader {
  public:
   // Opens the transport; throws CommandError naming the input when that fails.
-  InputReader(InputEndpoint endpoint, std::uint16_t index, MeasurementQueue& queue, bool configure_device);
+  // `recorder` (may be null) writes this input's raw bytes; `pacer` (may be null) paces a file input.
+  InputReader(InputEndpoint endpoint, std::uint16_t index, MeasurementQueue& queue, bool configure_device,
+              std::unique_ptr<StreamRecorder> recorder, RealtimePacer* pacer);
   ~InputReader();
   InputReader(const InputReader&) = delete;
   InputReader& operator=(const InputReader&) = delete;
@@ -63,7 +71,10 @@ class InputReader {
   // Collects the head of a stream without a format prefix; creates the decoder once detected.
   void detect(std::span<const std::uint8_t> bytes, bool at_end);
   void use_frontend(const frontends::FrontendInfo* frontend);
-  void feed(std::span<const std::uint8_t> bytes);
+  // One read: decoded, paced (file inputs with --realtime), recorded, queued.
+  void ingest(std::span<const std::uint8_t> bytes);
+  void decode(std::span<const std::uint8_t> bytes);
+  void finish_stream();
   void watch_link();  // logs losses and recoveries, re-configures a replugged device
   void publish_counters();
 
@@ -75,6 +86,9 @@ class InputReader {
   std::unique_ptr<io::Transport> transport_;
   std::unique_ptr<frontends::StreamDecoder> decoder_;
   std::unique_ptr<QueueSink> sink_;
+  std::unique_ptr<StreamRecorder> recorder_;
+  RealtimePacer* pacer_;
+  std::optional<std::uint64_t> decode_started_from_;  // detection succeeded in the current read
   std::atomic<const frontends::FrontendInfo*> frontend_{nullptr};
   std::vector<std::uint8_t> head_;  // bytes kept for format detection
   bool detection_failed_logged_ = false;

@@ -59,9 +59,15 @@ NavProcess::NavProcess(const RunOptions& options)
     }
   }
 
+  if (options_.realtime_speed < 0.0) throw CommandError("--realtime: the speed must be > 0");
+  if (options_.realtime_speed > 0.0) pacer_ = std::make_unique<RealtimePacer>(options_.realtime_speed);
+  if (!options_.record_dir.empty()) {
+    recorder_ = std::make_unique<RunRecorder>(options_.record_dir, options_.config_path, options_.inputs);
+  }
   for (std::size_t i = 0; i < endpoints.size(); ++i) {
+    auto recorder = recorder_ ? recorder_->open_stream(i, endpoints[i].text) : nullptr;
     inputs_.push_back(std::make_unique<InputReader>(std::move(endpoints[i]), static_cast<std::uint16_t>(i), queue_,
-                                                    options_.configure_device));
+                                                    options_.configure_device, std::move(recorder), pacer_.get()));
   }
   if (!options_.fe_out.empty()) {
     outputs_.push_back(std::make_unique<OutputSink>("--fe-out", fe_uri, make_fe_device_emulator(config_), queue_, actions_));

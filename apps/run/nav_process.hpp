@@ -67,6 +67,8 @@ class NavProcess final : private FusionObserver {
   MeasurementQueue queue_;
   EngineActionQueue actions_;
   LatencyTracker latency_;
+  std::unique_ptr<RunRecorder> recorder_;
+  std::unique_ptr<RealtimePacer> pacer_;
   std::vector<std::unique_ptr<InputReader>> inputs_;
   std::vector<std::unique_ptr<OutputSink>> outputs_;
   std::unique_ptr<LcmService> lcm_;

@@ -1,9 +1,12 @@
 #include "apps/run/run_command.hpp"
 
+#include <cmath>
 #include <csignal>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 
+#include "apps/common/command_error.hpp"
 #include "apps/common/summary.hpp"
 #include "apps/run/nav_process.hpp"
 #include "apps/run/run_log.hpp"
@@ -37,6 +40,16 @@ int run_nav_process(const RunOptions& options) {
   return 0;
 }
 
+double parse_speed(const std::string& text) {
+  if (text.empty()) return 1.0;
+  char* end = nullptr;
+  const double speed = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || !(speed > 0.0) || !std::isfinite(speed)) {
+    throw CommandError("--realtime: '" + text + "' is not a speed > 0 (times real time, e.g. 1 or 10)");
+  }
+  return speed;
+}
+
 }  // namespace
 
 void add_run_command(CLI::App& root, int& exit_code) {
@@ -56,8 +69,16 @@ void add_run_command(CLI::App& root, int& exit_code) {
   sub->add_option("--status-interval", opt->status_interval_s, "NAVFUSE_STATUS period, s (default 1)");
   sub->add_option("--summary-json", opt->summary_json, "At exit, write the run summary as JSON to this file");
   sub->add_flag("--quiet", opt->quiet, "Print only errors and events, no summary at exit");
-  sub->callback([opt, sub, &exit_code] {
+  sub->add_option("--record", opt->record_dir,
+                  "Write every input's raw bytes with host receive times into this new directory "
+                  "(navfuse replay --recording DIR gives this run's outputs again)");
+  auto realtime_arg = std::make_shared<std::string>();
+  CLI::Option* realtime = sub->add_option("--realtime", *realtime_arg,
+                                          "Feed file inputs at the pace of their timestamps [SPEED times real time, default 1]")
+                              ->expected(0, 1);
+  sub->callback([opt, sub, realtime, realtime_arg, &exit_code] {
     opt->lcm = sub->count("--lcm") > 0;
+    if (realtime->count() > 0) opt->realtime_speed = parse_speed(*realtime_arg);
     exit_code = run_nav_process(*opt);
   });
 }

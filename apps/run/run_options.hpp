@@ -18,6 +18,8 @@ struct RunOptions {
   double status_interval_s = 1.0;   // NAVFUSE_STATUS period
   std::string summary_json;         // at exit, the replay-style summary as JSON
   bool quiet = false;               // no summary on stderr at exit
+  std::string record_dir;           // --record: raw inputs written here (empty: not recorded)
+  double realtime_speed = 0.0;      // --realtime: file inputs paced at this many times real time (0: not paced)
 };
 
 }  // namespace navfuse::apps

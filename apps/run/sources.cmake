@@ -4,11 +4,13 @@ target_sources(navfuse_apps PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/fe_device_emulator.cpp
   ${CMAKE_CURRENT_LIST_DIR}/input_endpoint.cpp
   ${CMAKE_CURRENT_LIST_DIR}/input_reader.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/input_recorder.cpp
   ${CMAKE_CURRENT_LIST_DIR}/latency_tracker.cpp
   ${CMAKE_CURRENT_LIST_DIR}/lcm_service.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mip_device_emulator.cpp
   ${CMAKE_CURRENT_LIST_DIR}/nav_process.cpp
   ${CMAKE_CURRENT_LIST_DIR}/output_sink.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/realtime_pacer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/run_command.cpp
   ${CMAKE_CURRENT_LIST_DIR}/run_log.cpp
   ${CMAKE_CURRENT_LIST_DIR}/status_reporter.cpp
