@@ -9,6 +9,7 @@
 #include "apps/common/command_error.hpp"
 #include "apps/common/summary.hpp"
 #include "apps/run/nav_process.hpp"
+#include "apps/run/process_priority.hpp"
 #include "apps/run/run_log.hpp"
 #include "apps/run/run_options.hpp"
 #include "apps/run/termination_signals.hpp"
@@ -20,6 +21,9 @@ constexpr int kSignalPollMs = 50;  // also how soon the end of all (file) inputs
 
 int run_nav_process(const RunOptions& options) {
   TerminationSignals signals;  // before any thread exists, so every thread inherits the mask
+  // Also before any thread: they inherit the scheduling policy.
+  const PriorityOutcome priority = apply_priority({options.rt_priority, options.lock_memory});
+  for (const std::string& line : priority.report) log_event(line);
   NavProcess process(options);
   process.start();
   log_event("running; SIGINT or SIGTERM to stop");
@@ -72,6 +76,10 @@ void add_run_command(CLI::App& root, int& exit_code) {
   sub->add_option("--record", opt->record_dir,
                   "Write every input's raw bytes with host receive times into this new directory "
                   "(navfuse replay --recording DIR gives this run's outputs again)");
+  sub->add_option("--rt-priority", opt->rt_priority,
+                  "Run under SCHED_FIFO at this priority (1-99); reported when not permitted")
+      ->check(CLI::Range(1, 99));
+  sub->add_flag("--lock-memory", opt->lock_memory, "Lock all memory in RAM (mlockall); reported when not permitted");
   auto realtime_arg = std::make_shared<std::string>();
   CLI::Option* realtime = sub->add_option("--realtime", *realtime_arg,
                                           "Feed file inputs at the pace of their timestamps [SPEED times real time, default 1]")

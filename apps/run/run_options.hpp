@@ -19,6 +19,8 @@ struct RunOptions {
   std::string summary_json;         // at exit, the replay-style summary as JSON
   bool quiet = false;               // no summary on stderr at exit
   std::string record_dir;           // --record: raw inputs written here (empty: not recorded)
+  int rt_priority = 0;              // --rt-priority: SCHED_FIFO priority (0: normal scheduling)
+  bool lock_memory = false;         // --lock-memory: mlockall
   double realtime_speed = 0.0;      // --realtime: file inputs paced at this many times real time (0: not paced)
 };
 

@@ -10,6 +10,7 @@ target_sources(navfuse_apps PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/mip_device_emulator.cpp
   ${CMAKE_CURRENT_LIST_DIR}/nav_process.cpp
   ${CMAKE_CURRENT_LIST_DIR}/output_sink.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/process_priority.cpp
   ${CMAKE_CURRENT_LIST_DIR}/realtime_pacer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/run_command.cpp
   ${CMAKE_CURRENT_LIST_DIR}/run_log.cpp
