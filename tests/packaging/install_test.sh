@@ -29,7 +29,9 @@ fi
 
 for f in bin/navfuse etc/navfuse/navfuse.yaml etc/navfuse/navfuse.env lib/systemd/system/navfuse.service \
          share/navfuse/config/vn300.yaml share/navfuse/config/cv7.yaml \
-         share/navfuse/config/fusionengine.yaml share/navfuse/config/um220.yaml; do
+         share/navfuse/config/fusionengine.yaml share/navfuse/config/um220.yaml \
+         share/navfuse/python/navfuse/pose_t.py share/navfuse/python/navfuse/__init__.py \
+         share/navfuse/examples/pose_subscriber.py; do
   [ -f "$PREFIX/$f" ] || fail "$f not installed"
 done
 [ -x "$PREFIX/bin/navfuse" ] || fail "bin/navfuse not executable"
