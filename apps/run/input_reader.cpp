@@ -136,6 +136,7 @@ void InputReader::run() {
     if (n == io::kEndOfStream) break;
     if (n > 0) ingest(std::span<const std::uint8_t>(buffer.data(), static_cast<std::size_t>(n)));
     watch_link();
+    write_outgoing();
   }
   finish_stream();
   ended_.store(true, std::memory_order_release);
@@ -256,6 +257,27 @@ void InputReader::configure_device() {
   }
   log_event("input '" + endpoint_.text + "': sent the " + std::string(fmt) + " device set-up (" +
             std::to_string(commands.size()) + " commands, " + std::to_string(refused) + " refused)");
+}
+
+std::size_t InputReader::send(std::span<const std::uint8_t> bytes) {
+  std::lock_guard lock(outgoing_mutex_);
+  if (outgoing_.size() + bytes.size() > kMaxOutgoingBytes) return 0;
+  outgoing_.insert(outgoing_.end(), bytes.begin(), bytes.end());
+  return bytes.size();
+}
+
+void InputReader::write_outgoing() {
+  {
+    std::lock_guard lock(outgoing_mutex_);
+    if (outgoing_.empty()) return;
+    writing_.swap(outgoing_);
+  }
+  if (transport_->write(writing_) <= 0 && !outgoing_failure_logged_) {
+    log_event("input '" + endpoint_.text + "': cannot write to the device (" +
+              (transport_->is_open() ? "write refused" : "link down") + "); bytes for it are dropped");
+    outgoing_failure_logged_ = true;
+  }
+  writing_.clear();
 }
 
 void InputReader::publish_counters() {

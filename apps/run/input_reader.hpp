@@ -18,6 +18,8 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <mutex>
+#include <span>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -61,6 +63,10 @@ class InputReader {
   // The front-end in use ("" until detected).
   std::string_view format() const;
   InputCounters counters() const;
+  // From another thread: bytes for the device (RTK corrections), written by this reader's thread
+  // between reads. Returns the bytes accepted: 0 when kMaxOutgoingBytes are already waiting.
+  std::size_t send(std::span<const std::uint8_t> bytes);
+  static constexpr std::size_t kMaxOutgoingBytes = 65536;
   bool ended() const { return ended_.load(std::memory_order_acquire); }
 
  private:
@@ -77,6 +83,7 @@ class InputReader {
   void finish_stream();
   void watch_link();  // logs losses and recoveries, re-configures a replugged device
   void publish_counters();
+  void write_outgoing();
 
   InputEndpoint endpoint_;
   std::uint16_t index_;
@@ -94,6 +101,11 @@ class InputReader {
   bool detection_failed_logged_ = false;
   std::uint64_t seen_reconnects_ = 0;
   std::uint64_t seen_errors_ = 0;
+
+  std::mutex outgoing_mutex_;
+  std::vector<std::uint8_t> outgoing_;       // under outgoing_mutex_
+  std::vector<std::uint8_t> writing_;        // reader thread only
+  bool outgoing_failure_logged_ = false;
 
   std::thread thread_;
   std::atomic<bool> stop_{false};
