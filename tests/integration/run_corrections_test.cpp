@@ -162,10 +162,8 @@ std::vector<std::uint8_t> receive(PtyDevice& device, std::size_t want, int timeo
   return got;
 }
 
-class CorrectionsTest : public ::testing::Test {
+class CorrectionsTest : public ScratchDirTest {
  protected:
-  void SetUp() override { dir_ = scratch_dir(); }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
 
   std::string source(Protocol protocol, std::uint16_t port, const std::string& mount) const {
     const std::string at = "127.0.0.1:" + std::to_string(port);
@@ -176,7 +174,6 @@ class CorrectionsTest : public ::testing::Test {
     }
     return "";
   }
-  std::filesystem::path dir_;
 };
 
 class RunCorrectionsTest : public CorrectionsTest, public ::testing::WithParamInterface<Protocol> {};

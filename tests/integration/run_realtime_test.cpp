@@ -32,12 +32,7 @@ std::uint64_t rejected_as(const nlohmann::json& kind, const char* reason) {
   return kind["rejected"].contains(reason) ? kind["rejected"][reason].get<std::uint64_t>() : 0;
 }
 
-class RunRealtimeTest : public ::testing::Test {
- protected:
-  void SetUp() override { dir_ = scratch_dir(); }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::filesystem::path dir_;
-};
+using RunRealtimeTest = ScratchDirTest;
 
 TEST_F(RunRealtimeTest, PacedFileInputsAreUsedAsReplayUsesThem) {
   const std::string config = (kDemo / "vn300.yaml").string();

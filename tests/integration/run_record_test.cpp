@@ -79,12 +79,7 @@ std::uint64_t indexed_bytes(const std::filesystem::path& index) {
   return total;
 }
 
-class RunRecordTest : public ::testing::Test {
- protected:
-  void SetUp() override { dir_ = scratch_dir(); }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::filesystem::path dir_;
-};
+using RunRecordTest = ScratchDirTest;
 
 TEST_F(RunRecordTest, RecordingReplaysToTheLiveRunsOutputsByteForByte) {
   const SimLog vn_log = make_sim_log("drive_short", "vn", 60.0);
