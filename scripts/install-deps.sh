@@ -18,6 +18,13 @@ if [ -n "${NAVFUSE_EXTRA_PACKAGES:-}" ]; then
   packages+=("${extra[@]}")
 fi
 
+# Installed where the distribution packages them (Debian 12 does not): LCM's Python module, for
+# examples/python/pose_subscriber.py and its test (which is skipped without it).
+optional=(python3-lcm)
+for p in "${optional[@]}"; do
+  if apt-cache show "$p" > /dev/null 2>&1; then packages+=("$p"); fi
+done
+
 missing=()
 for p in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "apps/bench/bench.hpp"
+#include "apps/common/command_help.hpp"
 #include "apps/common/gps_week_option.hpp"
 
 namespace navfuse::apps {
@@ -17,7 +18,7 @@ void add_bench_command(CLI::App& root, int& exit_code) {
   auto args = std::make_shared<Args>();
   CLI::App* cmd = root.add_subcommand(
       "bench", "Compare navfuse with the device's own solution in the same log (and both with truth)");
-  cmd->add_option("inputs", args->options.inputs, "[FORMAT:]PATH of each log (fe, mip, vn, unicore, rtklib, imutxt)")->required();
+  add_inputs(cmd, args->options.inputs, "[FORMAT:]PATH of each log (fe, mip, vn, unicore, rtklib, imutxt)")->required();
   add_gps_week_option(cmd, args->options.gps_week);
   cmd->add_option("--config", args->options.config_path, "YAML configuration (default: the device's profile)");
   cmd->add_option("--truth", args->options.truth_path, "truth CSV (navfuse sim --truth) to compare both with");
@@ -31,7 +32,12 @@ void add_bench_command(CLI::App& root, int& exit_code) {
   cmd->add_flag("--no-html", [args](std::int64_t) { args->options.html = false; },
                 "write metrics.json and CSVs only (no Python needed)");
   cmd->add_flag("--allow-truncated", args->options.allow_truncated, "accept a log whose last frame is cut off");
-  cmd->add_flag("--quiet", args->quiet, "print only errors");
+  add_quiet_flag(cmd, args->quiet, "summary, notes or progress bar");
+  add_examples(cmd, {{"navfuse against the Point One Atlas's own solution in its log, metrics only",
+                      "navfuse bench --config data/demo/fusionengine.yaml data/demo/atlas.p1log --report bench-out --no-html"},
+                     {"the demo CV7 log: navfuse and the CV7's own filter, both against the simulated truth",
+                      "navfuse bench --config data/demo/cv7.yaml data/demo/cv7.mip --truth data/demo/truth.csv "
+                      "--report bench-cv7"}});
   cmd->callback([args, &exit_code] {
     for (const auto& a : args->fail_above) args->options.fail_above.push_back(bench::parse_fail_threshold(a));
     args->options.progress = !args->quiet;

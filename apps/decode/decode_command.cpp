@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/common/command_error.hpp"
+#include "apps/common/command_help.hpp"
 #include "apps/common/input_bytes.hpp"
 #include "apps/common/gps_week_option.hpp"
 #include "apps/common/input_spec.hpp"
@@ -29,6 +30,7 @@ struct DecodeOptions {
   std::string format = "csv";
   std::string out_path;  // empty: stdout
   std::string summary_json;
+  bool quiet = false;
 };
 
 // CSV in long ("tidy") form, one row per field, because frames of different types have
@@ -161,7 +163,7 @@ int run_decode(const DecodeOptions& opt) {
 
   summary.inputs.push_back({spec.path, std::string(spec.frontend->format), decoder->counters()});
   if (!opt.summary_json.empty()) write_json_file(opt.summary_json, summary.to_json(/*decode_only=*/true));
-  if (!opt.out_path.empty()) summary.print(std::cerr, /*decode_only=*/true);
+  if (!opt.out_path.empty() && !opt.quiet) summary.print(std::cerr, /*decode_only=*/true);
   return 0;
 }
 
@@ -177,6 +179,11 @@ void add_decode_command(CLI::App& root, int& exit_code) {
   sub->add_option("--format", opt->format, "Output format")->check(CLI::IsMember({"csv", "jsonl"}));
   sub->add_option("-o,--out", opt->out_path, "Write the records to this file instead of stdout");
   sub->add_option("--summary-json", opt->summary_json, "Write the counters as JSON to this file");
+  add_quiet_flag(sub, opt->quiet, "counters on stderr with -o");
+  add_examples(sub, {{"every frame and measurement of the demo VN-300 log, as JSON lines",
+                      "navfuse decode data/demo/vn300.vnb --format jsonl | head"},
+                     {"a MIP log (format given) to a CSV file, the counters as JSON",
+                      "navfuse decode mip:data/demo/cv7.mip -o cv7.csv --summary-json cv7.json"}});
   sub->callback([opt, &exit_code] { exit_code = run_decode(*opt); });
 }
 

@@ -7,6 +7,10 @@
 // it assumes each input is roughly in time order (what a device port delivers). Measurements a
 // device delivers late stay late within their stream; the filter fuses those from its history.
 //
+// A recording of `navfuse run --record` (recording_format.hpp) is merged in the live run's order
+// instead: the reads of all inputs in their recorded sequence, each decoded as the live run
+// decoded it (format detection's start included), so the filter sees what it saw live.
+//
 // Every measurement's header.stream_id is set to its input's index.
 #pragma once
 
@@ -18,6 +22,7 @@
 #include <vector>
 
 #include "apps/common/input_spec.hpp"
+#include "apps/common/recording_format.hpp"
 #include "apps/common/summary.hpp"
 #include "core/measurements/measurements.hpp"
 #include "frontends/common/stream_decoder.hpp"
@@ -34,6 +39,9 @@ class MeasurementMerger {
 
   // Opens every input; throws CommandError naming the file when one cannot be opened.
   MeasurementMerger(const std::vector<InputSpec>& inputs, const Options& options);
+  // The inputs of a recording, in recorded order. A recording cut off mid-frame (the run was
+  // stopped) is normal: such inputs are listed in truncated_inputs(), not an error.
+  MeasurementMerger(const Recording& recording, const Options& options);
   ~MeasurementMerger();
   MeasurementMerger(const MeasurementMerger&) = delete;
   MeasurementMerger& operator=(const MeasurementMerger&) = delete;
@@ -56,12 +64,15 @@ class MeasurementMerger {
  private:
   struct Stream;
   struct Head {
-    std::int64_t time_ns;
+    std::int64_t key;  // measurement time, or for a recording the read's sequence number
     std::size_t input;
-    bool operator>(const Head& o) const { return time_ns != o.time_ns ? time_ns > o.time_ns : input > o.input; }
+    bool operator>(const Head& o) const { return key != o.key ? key > o.key : input > o.input; }
   };
+  void start();
   // Decodes chunks of input `i` until it has a queued measurement or ends.
   void refill(std::size_t i);
+  void refill_recorded(Stream& s);
+  void end_of_input(Stream& s);
   void push_head(std::size_t i);
 
   Options options_;

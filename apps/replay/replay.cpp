@@ -8,6 +8,7 @@
 #include "apps/common/command_error.hpp"
 #include "apps/common/frontend_registry.hpp"
 #include "apps/common/input_spec.hpp"
+#include "apps/common/recording_format.hpp"
 #include "apps/lcm/lcm_pose_writer.hpp"
 #include "apps/output/csv_pose_writer.hpp"
 #include "apps/output/encoded_file_writer.hpp"
@@ -104,19 +105,33 @@ config::Config replay_config(const std::string& config_path, std::string_view fi
 }
 
 ReplayResult run_replay(const ReplayOptions& options) {
-  if (options.inputs.empty()) throw CommandError("replay needs at least one INPUT");
-  const std::vector<InputSpec> specs = resolve_inputs(options.inputs, options.gps_week);
-  const config::Config config = replay_config(options.config_path, specs.front().frontend->format);
+  const bool recorded = !options.recording_dir.empty();
+  if (recorded && !options.inputs.empty()) throw CommandError("replay: give INPUT files or --recording DIR, not both");
+  if (!recorded && options.inputs.empty()) throw CommandError("replay needs at least one INPUT (or --recording DIR)");
+  std::optional<Recording> recording;
+  std::vector<InputSpec> specs;
+  if (recorded) {
+    recording = read_recording(options.recording_dir);
+  } else {
+    specs = resolve_inputs(options.inputs, options.gps_week);
+  }
+  const config::Config config =
+      recorded ? replay_config(options.config_path.empty() ? recording->config_path : options.config_path, "")
+               : replay_config(options.config_path, specs.front().frontend->format);
   const double rate_hz = options.output_rate_hz.value_or(config.output.rate_hz);
   if (!(rate_hz >= 0.0)) throw CommandError("output rate must be >= 0 Hz (0 = every IMU sample)");
 
   // Everything that can fail on bad arguments is opened before the (long) run starts.
   std::vector<std::string> input_paths;
   for (const InputSpec& spec : specs) input_paths.push_back(spec.path);
+  if (recording) {
+    for (const RecordedInput& in : recording->inputs) input_paths.push_back(in.raw_path);
+  }
   if (!options.truth_path.empty()) input_paths.push_back(options.truth_path);
   check_output_paths(input_paths,
                      {{"--fe-out", options.fe_out}, {"--mip-out", options.mip_out}, {"--csv", options.csv_out}});
-  MeasurementMerger merger(specs, {.chunk_bytes = 16 * 1024, .allow_truncated = options.allow_truncated});
+  const MeasurementMerger::Options merge{.chunk_bytes = 16 * 1024, .allow_truncated = options.allow_truncated};
+  MeasurementMerger merger = recording ? MeasurementMerger(*recording, merge) : MeasurementMerger(specs, merge);
   std::unique_ptr<TruthAccuracy> accuracy;
   if (!options.truth_path.empty()) {
     accuracy = std::make_unique<TruthAccuracy>(options.truth_path, Eigen::Vector3d(config.gnss.lever_arm_m.data()));

@@ -24,6 +24,9 @@ namespace navfuse::apps {
 struct ReplayOptions {
   std::string config_path;  // empty: defaults of the device profile matching the first input
   std::vector<std::string> inputs;
+  // --recording DIR: the inputs of a `navfuse run --record DIR`, in the live run's order, with
+  // the run's config unless config_path is given (instead of `inputs`).
+  std::string recording_dir;
   std::optional<std::int32_t> gps_week;  // --gps-week: the week of imutxt inputs
   std::string fe_out, mip_out, csv_out;
   std::string truth_path;

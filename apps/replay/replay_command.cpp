@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "apps/common/command_error.hpp"
+#include "apps/common/command_help.hpp"
 #include "apps/common/interrupt_signals.hpp"
 #include "apps/common/gps_week_option.hpp"
 #include "apps/common/summary.hpp"
@@ -25,10 +26,7 @@ int run(ReplayArgs& args) {
   if (args.rate_hz >= 0.0) args.options.output_rate_hz = args.rate_hz;
   if (args.lcm->count() > 0) {
     // --lcm takes an optional value, so `--lcm LOG` would read the log as the URL.
-    if (!args.lcm_url.empty() && args.lcm_url.find("://") == std::string::npos) {
-      throw CommandError("--lcm: '" + args.lcm_url + "' is not an LCM URL (e.g. udpm://239.255.76.67:7667?ttl=0); "
-                         "write --lcm=URL, or put --lcm after the inputs");
-    }
+    check_lcm_url(args.lcm_url);
     args.options.lcm_url = args.lcm_url;
   }
   args.options.progress = !args.quiet;
@@ -67,9 +65,12 @@ void add_replay_command(CLI::App& root, int& exit_code) {
   auto args = std::make_shared<ReplayArgs>();
   ReplayOptions& o = args->options;
   CLI::App* sub = root.add_subcommand("replay", "Replay logs through the filter as fast as possible");
-  sub->add_option("INPUT", o.inputs, "[FORMAT:]PATH, several merged by measurement time; FORMAT one of fe, mip, vn, "
-                                     "unicore, rtklib, imutxt (detected when omitted)")
-      ->required();
+  add_inputs(sub, o.inputs,
+             "[FORMAT:]PATH, several merged by measurement time; FORMAT one of fe, mip, vn, unicore, rtklib, "
+             "imutxt (detected when omitted)");
+  sub->add_option("--recording", o.recording_dir,
+                  "Replay a `navfuse run --record DIR` recording in the live run's order (with its config "
+                  "unless --config is given): the live run's outputs again, byte for byte");
   add_gps_week_option(sub, o.gps_week);
   sub->add_option("--config", o.config_path, "YAML configuration (default: the device profile of the first input)");
   sub->add_option("--fe-out", o.fe_out, "Write FusionEngine Pose/PoseAux/GNSSInfo/IMUOutput to this file");
@@ -87,7 +88,12 @@ void add_replay_command(CLI::App& root, int& exit_code) {
   sub->add_option("--gnss-outage", o.gnss_outage,
                   "Withhold GNSS in windows PERIOD_S:DURATION_S[:START_S] from the first IMU sample (e.g. 30:10)");
   sub->add_flag("--allow-truncated", o.allow_truncated, "Replay an input whose last frame is cut off");
-  sub->add_flag("-q,--quiet", args->quiet, "Print only errors");
+  add_quiet_flag(sub, args->quiet, "summary, accuracy or progress bar");
+  add_examples(sub, {{"the demo drive with its wheel speeds, scored against truth, poses to CSV",
+                      "navfuse replay --config data/demo/vn300.yaml data/demo/vn300.vnb data/demo/vn300_wheel.p1log "
+                      "--truth data/demo/truth.csv --csv pose.csv"},
+                     {"a `navfuse run --record rec` recording: the live run's outputs again",
+                      "navfuse replay --recording rec --fe-out pose.p1log --mip-out pose.mip"}});
   sub->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

@@ -15,6 +15,7 @@ namespace {
 
 constexpr int kReadTimeoutMs = 100;        // how often a quiet reader looks at the stop flag
 constexpr std::size_t kReadChunk = 16384;  // one read; a VN-300 at 921600 baud fills ~92 kB/s
+constexpr std::size_t kPacedReadChunk = 64;  // --realtime file reads: about one frame each
 // Detection waits for this many bytes so that every probe sees a few whole frames.
 constexpr std::size_t kDetectMinBytes = 2048;
 // --configure-device: how long to wait for a device's answer to one command, and the quiet
@@ -30,46 +31,70 @@ bool is_regular_file(const io::Uri& uri) {
 
 }  // namespace
 
-// Stamps decoded measurements with their input and arrival time and queues them. One scratch
-// item is reused, so queueing copies into preallocated storage and nothing is allocated.
+// Collects a read's decoded measurements, stamped with their input and arrival time, then queues
+// them as one block. The batch's storage is reused read after read, so after the first reads
+// nothing is allocated.
 class InputReader::QueueSink final : public frontends::DecodeSink {
  public:
-  explicit QueueSink(InputReader& reader) : reader_(reader) { item_.source = reader.index_; }
-  void set_arrival(std::int64_t arrival_ns) { item_.arrival_ns = arrival_ns; }
+  explicit QueueSink(InputReader& reader) : reader_(reader) {}
+  void begin(std::int64_t arrival_ns) {
+    arrival_ns_ = arrival_ns;
+    size_ = 0;
+  }
 
   void on_measurement(const Measurement& m) override {
-    item_.measurement = m;
-    header_of(item_.measurement).stream_id = reader_.index_;
-    bool queued = false;
-    if (reader_.live_) {
-      queued = reader_.queue_.try_push(item_);
-    } else {
-      while (!queued && !reader_.stop_.load(std::memory_order_relaxed)) {
-        queued = reader_.queue_.push_wait(item_, std::chrono::milliseconds(kReadTimeoutMs));
+    if (size_ == batch_.size()) batch_.emplace_back();
+    ArrivedMeasurement& item = batch_[size_++];
+    item.measurement = m;
+    item.arrival_ns = arrival_ns_;
+    item.source = reader_.index_;
+    header_of(item.measurement).stream_id = reader_.index_;
+  }
+
+  std::span<const ArrivedMeasurement> batch() const { return {batch_.data(), size_}; }
+
+  void queue() {
+    for (const ArrivedMeasurement& item : batch()) {
+      if (reader_.pacer_ != nullptr) reader_.pacer_->wait(header_of(item.measurement), reader_.stop_);
+      bool queued = false;
+      if (reader_.live_) {
+        queued = reader_.queue_.try_push(item);
+      } else {
+        while (!queued && !reader_.stop_.load(std::memory_order_relaxed)) {
+          queued = reader_.queue_.push_wait(item, std::chrono::milliseconds(kReadTimeoutMs));
+        }
       }
+      (queued ? reader_.measurements_ : reader_.dropped_).fetch_add(1, std::memory_order_relaxed);
     }
-    (queued ? reader_.measurements_ : reader_.dropped_).fetch_add(1, std::memory_order_relaxed);
+    size_ = 0;
   }
 
  private:
   InputReader& reader_;
-  ArrivedMeasurement item_;
+  std::vector<ArrivedMeasurement> batch_;
+  std::size_t size_ = 0;
+  std::int64_t arrival_ns_ = 0;
 };
 
 InputReader::InputReader(InputEndpoint endpoint, std::uint16_t index, MeasurementQueue& queue,
-                         bool configure_device)
+                         bool configure_device, std::unique_ptr<StreamRecorder> recorder, RealtimePacer* pacer)
     : endpoint_(std::move(endpoint)),
       index_(index),
       queue_(queue),
       configure_(configure_device),
       live_(!is_regular_file(endpoint_.uri)),
-      sink_(std::make_unique<QueueSink>(*this)) {
+      sink_(std::make_unique<QueueSink>(*this)),
+      recorder_(std::move(recorder)),
+      pacer_(live_ ? nullptr : pacer) {
   try {
     transport_ = io::open_transport(endpoint_.uri, io::Direction::kInput);
   } catch (const io::TransportError& e) {
     throw CommandError("--in '" + endpoint_.text + "': " + e.what());
   }
-  if (endpoint_.frontend != nullptr) use_frontend(endpoint_.frontend);
+  if (endpoint_.frontend != nullptr) {
+    use_frontend(endpoint_.frontend);
+    if (recorder_) recorder_->decoding(endpoint_.frontend->format, 0);
+  }
   seen_reconnects_ = transport_->stats().reconnects;
   seen_errors_ = transport_->stats().errors;
 }
@@ -103,27 +128,57 @@ void InputReader::use_frontend(const frontends::FrontendInfo* frontend) {
 
 void InputReader::run() {
   std::array<std::uint8_t, kReadChunk> buffer{};
+  // Paced reads are small, so that a read's block of measurements spans little time.
+  const std::size_t read_size = pacer_ != nullptr ? kPacedReadChunk : buffer.size();
   if (configure_ && live_) configure_device();
   while (!stop_.load(std::memory_order_relaxed)) {
-    const std::ptrdiff_t n = transport_->read(buffer, kReadTimeoutMs);
+    const std::ptrdiff_t n = transport_->read(std::span(buffer.data(), read_size), kReadTimeoutMs);
     if (n == io::kEndOfStream) break;
-    if (n > 0) {
-      sink_->set_arrival(monotonic_ns());
-      feed(std::span<const std::uint8_t>(buffer.data(), static_cast<std::size_t>(n)));
-    }
+    if (n > 0) ingest(std::span<const std::uint8_t>(buffer.data(), static_cast<std::size_t>(n)));
     watch_link();
+    write_outgoing();
   }
-  if (decoder_) {
-    decoder_->finish(*sink_);
-  } else if (!head_.empty()) {
-    detect({}, /*at_end=*/true);
-  }
-  publish_counters();
+  finish_stream();
   ended_.store(true, std::memory_order_release);
   if (!stop_.load(std::memory_order_relaxed)) log_event("input '" + endpoint_.text + "' ended");
 }
 
-void InputReader::feed(std::span<const std::uint8_t> bytes) {
+void InputReader::ingest(std::span<const std::uint8_t> bytes) {
+  const std::int64_t arrival_ns = monotonic_ns();
+  sink_->begin(arrival_ns);
+  decode(bytes);
+  // The first wait outside the recorder's lock; the rest of a (small) paced read waits in queue().
+  if (pacer_ != nullptr && !sink_->batch().empty()) pacer_->wait(header_of(sink_->batch().front().measurement), stop_);
+  std::unique_lock<std::mutex> order;
+  if (recorder_) {
+    order = recorder_->read(bytes, arrival_ns);
+    if (decode_started_from_) recorder_->decoding(format(), *decode_started_from_);
+  }
+  decode_started_from_.reset();
+  sink_->queue();
+}
+
+void InputReader::finish_stream() {
+  const std::int64_t now = monotonic_ns();
+  sink_->begin(now);
+  if (decoder_) {
+    decoder_->finish(*sink_);
+  } else if (!head_.empty()) {
+    detect({}, /*at_end=*/true);
+    if (decoder_) decoder_->finish(*sink_);
+  }
+  std::unique_lock<std::mutex> order;
+  if (recorder_) {
+    order = recorder_->end(now);
+    // Detected only now: its measurements are queued with the end, so the decode line follows it.
+    if (decode_started_from_) recorder_->decoding(format(), *decode_started_from_);
+  }
+  decode_started_from_.reset();
+  sink_->queue();
+  publish_counters();
+}
+
+void InputReader::decode(std::span<const std::uint8_t> bytes) {
   bytes_.fetch_add(bytes.size(), std::memory_order_relaxed);
   if (decoder_) {
     decoder_->feed(bytes, *sink_);
@@ -139,6 +194,7 @@ void InputReader::detect(std::span<const std::uint8_t> bytes, bool at_end) {
   if (const auto* f = detect_format(head_)) {
     log_event("input '" + endpoint_.text + "': detected format " + std::string(f->format));
     use_frontend(f);
+    decode_started_from_ = bytes_.load(std::memory_order_relaxed) - head_.size();
     decoder_->feed(head_, *sink_);
     head_ = {};  // release the probe buffer: it is not needed again
     return;
@@ -192,8 +248,7 @@ void InputReader::configure_device() {
       }
       const std::span<const std::uint8_t> got(buffer.data(), static_cast<std::size_t>(n));
       reply.insert(reply.end(), got.begin(), got.end());
-      sink_->set_arrival(monotonic_ns());
-      feed(got);
+      ingest(got);
     }
     if (const std::string why = find_refusal(fmt, reply); !why.empty()) {
       ++refused;
@@ -202,6 +257,27 @@ void InputReader::configure_device() {
   }
   log_event("input '" + endpoint_.text + "': sent the " + std::string(fmt) + " device set-up (" +
             std::to_string(commands.size()) + " commands, " + std::to_string(refused) + " refused)");
+}
+
+std::size_t InputReader::send(std::span<const std::uint8_t> bytes) {
+  std::lock_guard lock(outgoing_mutex_);
+  if (outgoing_.size() + bytes.size() > kMaxOutgoingBytes) return 0;
+  outgoing_.insert(outgoing_.end(), bytes.begin(), bytes.end());
+  return bytes.size();
+}
+
+void InputReader::write_outgoing() {
+  {
+    std::lock_guard lock(outgoing_mutex_);
+    if (outgoing_.empty()) return;
+    writing_.swap(outgoing_);
+  }
+  if (transport_->write(writing_) <= 0 && !outgoing_failure_logged_) {
+    log_event("input '" + endpoint_.text + "': cannot write to the device (" +
+              (transport_->is_open() ? "write refused" : "link down") + "); bytes for it are dropped");
+    outgoing_failure_logged_ = true;
+  }
+  writing_.clear();
 }
 
 void InputReader::publish_counters() {

@@ -9,12 +9,18 @@
 //    again.
 //  - Without a FORMAT: prefix the format is detected from the first bytes received.
 //  - A live input never waits for the filter: when the queue is full the measurement is dropped
-//    and counted. A file input is not live, so it waits for room instead of losing data.
+//    and counted. A file input is not live, so it waits for room instead of losing data, and
+//    with --realtime it is also paced by its own timestamps (realtime_pacer.hpp).
+//  - Each read is decoded first, then its measurements are queued as one block; with --record the
+//    read is written, numbered, under the recorder's lock that keeps that order (input_recorder.hpp).
 #pragma once
 
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <mutex>
+#include <span>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -22,6 +28,8 @@
 
 #include "apps/run/arrived_measurement.hpp"
 #include "apps/run/input_endpoint.hpp"
+#include "apps/run/input_recorder.hpp"
+#include "apps/run/realtime_pacer.hpp"
 #include "core/io/transport.hpp"
 
 namespace navfuse::apps {
@@ -40,7 +48,9 @@ struct InputCounters {
 class InputReader {
  public:
   // Opens the transport; throws CommandError naming the input when that fails.
-  InputReader(InputEndpoint endpoint, std::uint16_t index, MeasurementQueue& queue, bool configure_device);
+  // `recorder` (may be null) writes this input's raw bytes; `pacer` (may be null) paces a file input.
+  InputReader(InputEndpoint endpoint, std::uint16_t index, MeasurementQueue& queue, bool configure_device,
+              std::unique_ptr<StreamRecorder> recorder, RealtimePacer* pacer);
   ~InputReader();
   InputReader(const InputReader&) = delete;
   InputReader& operator=(const InputReader&) = delete;
@@ -53,6 +63,10 @@ class InputReader {
   // The front-end in use ("" until detected).
   std::string_view format() const;
   InputCounters counters() const;
+  // From another thread: bytes for the device (RTK corrections), written by this reader's thread
+  // between reads. Returns the bytes accepted: 0 when kMaxOutgoingBytes are already waiting.
+  std::size_t send(std::span<const std::uint8_t> bytes);
+  static constexpr std::size_t kMaxOutgoingBytes = 65536;
   bool ended() const { return ended_.load(std::memory_order_acquire); }
 
  private:
@@ -63,9 +77,13 @@ class InputReader {
   // Collects the head of a stream without a format prefix; creates the decoder once detected.
   void detect(std::span<const std::uint8_t> bytes, bool at_end);
   void use_frontend(const frontends::FrontendInfo* frontend);
-  void feed(std::span<const std::uint8_t> bytes);
+  // One read: decoded, paced (file inputs with --realtime), recorded, queued.
+  void ingest(std::span<const std::uint8_t> bytes);
+  void decode(std::span<const std::uint8_t> bytes);
+  void finish_stream();
   void watch_link();  // logs losses and recoveries, re-configures a replugged device
   void publish_counters();
+  void write_outgoing();
 
   InputEndpoint endpoint_;
   std::uint16_t index_;
@@ -75,11 +93,19 @@ class InputReader {
   std::unique_ptr<io::Transport> transport_;
   std::unique_ptr<frontends::StreamDecoder> decoder_;
   std::unique_ptr<QueueSink> sink_;
+  std::unique_ptr<StreamRecorder> recorder_;
+  RealtimePacer* pacer_;
+  std::optional<std::uint64_t> decode_started_from_;  // detection succeeded in the current read
   std::atomic<const frontends::FrontendInfo*> frontend_{nullptr};
   std::vector<std::uint8_t> head_;  // bytes kept for format detection
   bool detection_failed_logged_ = false;
   std::uint64_t seen_reconnects_ = 0;
   std::uint64_t seen_errors_ = 0;
+
+  std::mutex outgoing_mutex_;
+  std::vector<std::uint8_t> outgoing_;       // under outgoing_mutex_
+  std::vector<std::uint8_t> writing_;        // reader thread only
+  bool outgoing_failure_logged_ = false;
 
   std::thread thread_;
   std::atomic<bool> stop_{false};

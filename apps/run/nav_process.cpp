@@ -35,7 +35,7 @@ NavProcess::NavProcess(const RunOptions& options)
       config_(load_config(options.config_path)),
       queue_(kQueueCapacity),
       actions_(kActionQueueCapacity) {
-  if (options_.inputs.empty()) throw CommandError("run needs at least one --in URI");
+  if (options_.inputs.empty()) throw CommandError("run needs at least one INPUT (or --in URI)");
   if (!(options_.status_interval_s > 0)) throw CommandError("--status-interval must be > 0 s");
   runner_ = std::make_unique<FusionRunner>(
       filter::options_from_config(config_),
@@ -59,9 +59,15 @@ NavProcess::NavProcess(const RunOptions& options)
     }
   }
 
+  if (options_.realtime_speed < 0.0) throw CommandError("--realtime: the speed must be > 0");
+  if (options_.realtime_speed > 0.0) pacer_ = std::make_unique<RealtimePacer>(options_.realtime_speed);
+  if (!options_.record_dir.empty()) {
+    recorder_ = std::make_unique<RunRecorder>(options_.record_dir, options_.config_path, options_.inputs);
+  }
   for (std::size_t i = 0; i < endpoints.size(); ++i) {
+    auto recorder = recorder_ ? recorder_->open_stream(i, endpoints[i].text) : nullptr;
     inputs_.push_back(std::make_unique<InputReader>(std::move(endpoints[i]), static_cast<std::uint16_t>(i), queue_,
-                                                    options_.configure_device));
+                                                    options_.configure_device, std::move(recorder), pacer_.get()));
   }
   if (!options_.fe_out.empty()) {
     outputs_.push_back(std::make_unique<OutputSink>("--fe-out", fe_uri, make_fe_device_emulator(config_), queue_, actions_));
@@ -71,6 +77,14 @@ NavProcess::NavProcess(const RunOptions& options)
         std::make_unique<OutputSink>("--mip-out", mip_uri, std::make_unique<MipDeviceEmulator>(), queue_, actions_));
   }
   if (options_.lcm) lcm_ = std::make_unique<LcmService>(options_.lcm_url, queue_, latency_);
+  if (!options_.corrections.empty()) {
+    if (options_.corrections_to < 0 || static_cast<std::size_t>(options_.corrections_to) >= inputs_.size()) {
+      throw CommandError("--corrections-to " + std::to_string(options_.corrections_to) + ": there are " +
+                         std::to_string(inputs_.size()) + " inputs, numbered from 0");
+    }
+    corrections_ = std::make_unique<CorrectionsForwarder>(parse_corrections_source(options_.corrections),
+                                                          *inputs_[static_cast<std::size_t>(options_.corrections_to)]);
+  }
   for (const auto& in : inputs_) snapshots_.push_back({in->name(), {}});
 }
 
@@ -83,11 +97,13 @@ void NavProcess::start() {
   for (auto& out : outputs_) out->start();
   filter_thread_ = std::thread([this] { filter_loop(); });
   for (auto& in : inputs_) in->start();
+  if (corrections_) corrections_->start();
 }
 
 void NavProcess::stop() {
   if (stopped_ || !filter_thread_.joinable()) return;
   stopped_ = true;
+  if (corrections_) corrections_->stop();
   // Producers first, then the filter drains the queue, then the consumers of its output flush.
   for (auto& in : inputs_) in->request_stop();
   for (auto& in : inputs_) in->join();
@@ -194,6 +210,7 @@ Summary NavProcess::summary() const {
   }
   const std::int64_t end_ns = stopped_ns_ > 0 ? stopped_ns_ : monotonic_ns();
   runner_->fill_summary(s, started_ns_ > 0 ? static_cast<double>(end_ns - started_ns_) * 1e-9 : 0.0);
+  if (corrections_) s.extra["corrections"] = corrections_->counters();
   return s;
 }
 

@@ -21,6 +21,7 @@
 #include "apps/common/summary.hpp"
 #include "apps/fusion/fusion_runner.hpp"
 #include "apps/run/arrived_measurement.hpp"
+#include "apps/run/corrections_forwarder.hpp"
 #include "apps/run/engine_action.hpp"
 #include "apps/run/input_reader.hpp"
 #include "apps/run/latency_tracker.hpp"
@@ -67,9 +68,12 @@ class NavProcess final : private FusionObserver {
   MeasurementQueue queue_;
   EngineActionQueue actions_;
   LatencyTracker latency_;
+  std::unique_ptr<RunRecorder> recorder_;
+  std::unique_ptr<RealtimePacer> pacer_;
   std::vector<std::unique_ptr<InputReader>> inputs_;
   std::vector<std::unique_ptr<OutputSink>> outputs_;
   std::unique_ptr<LcmService> lcm_;
+  std::unique_ptr<CorrectionsForwarder> corrections_;
 
   // Filter thread state.
   StatusReporter status_;

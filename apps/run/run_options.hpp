@@ -18,6 +18,12 @@ struct RunOptions {
   double status_interval_s = 1.0;   // NAVFUSE_STATUS period
   std::string summary_json;         // at exit, the replay-style summary as JSON
   bool quiet = false;               // no summary on stderr at exit
+  std::string record_dir;           // --record: raw inputs written here (empty: not recorded)
+  int rt_priority = 0;              // --rt-priority: SCHED_FIFO priority (0: normal scheduling)
+  bool lock_memory = false;         // --lock-memory: mlockall
+  std::string corrections;          // --corrections: ntrip:// or tcp:// source (empty: none)
+  int corrections_to = 0;           // --corrections-to: the input (0-based) whose port receives them
+  double realtime_speed = 0.0;      // --realtime: file inputs paced at this many times real time (0: not paced)
 };
 
 }  // namespace navfuse::apps

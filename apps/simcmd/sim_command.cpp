@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "apps/common/command_error.hpp"
+#include "apps/common/command_help.hpp"
 #include "apps/common/frontend_registry.hpp"
 #include "apps/output/output_file.hpp"
 #include "apps/sim/scenarios.hpp"
@@ -180,7 +181,11 @@ void add_sim_command(CLI::App& root, int& exit_code) {
   sub->add_option("--wheel-out", o.wheel_out_path, "Write wheel/vehicle speed to this FusionEngine log instead");
   sub->add_option("--device-rate", args->device_rate_hz, "Device INS solution rate in Hz (0: none)")
       ->check(CLI::NonNegativeNumber);
-  sub->add_flag("-q,--quiet", args->quiet, "Print only errors");
+  add_quiet_flag(sub, args->quiet, "report of what was written");
+  add_examples(sub, {{"a short drive as a CV7 (MIP) log, with its truth",
+                      "navfuse sim --scenario drive_short --format mip --out drive.mip --truth truth.csv"},
+                     {"a drive with GNSS outages as VN-300 binary, the wheel speeds in a FusionEngine log",
+                      "navfuse sim --scenario drive_outage --format vn --out drive.vnb --wheel-out wheel.p1log"}});
   sub->callback([args, seed, &exit_code] {
     if (seed->count() > 0) args->options.seed = args->seed;
     if (args->device_rate_hz >= 0.0) args->options.device_rate_hz = args->device_rate_hz;

@@ -20,6 +20,7 @@ class ChildProcess {
   ChildProcess& operator=(const ChildProcess&) = delete;
 
   bool started() const { return pid_ > 0; }
+  pid_t pid() const { return pid_; }
   void send(int signal) const;
   // The exit code once the child has exited within timeout_ms; nullopt while it runs. A child
   // killed by a signal reports 128 + the signal number, as a shell does.

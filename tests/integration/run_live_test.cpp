@@ -139,12 +139,7 @@ double median_spacing_s(const std::vector<std::int64_t>& times, std::int64_t fro
   return d[d.size() / 2];
 }
 
-class RunLiveTest : public ::testing::Test {
- protected:
-  void SetUp() override { dir_ = scratch_dir(); }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::filesystem::path dir_;
-};
+using RunLiveTest = ScratchDirTest;
 
 TEST_F(RunLiveTest, SerialDeviceLcmAidingFeCommandsReplugAndSigterm) {
   const SimLog log = make_sim_log("drive_short", "vn", 40.0);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -22,8 +23,10 @@ struct SimLog {
   std::int64_t start_ns = 0;
 };
 
-// The first `seconds` of scenario `name`, encoded as `format` ("vn", "mip", ...).
-inline SimLog make_sim_log(std::string_view name, std::string_view format, double seconds) {
+// The first `seconds` of scenario `name`, encoded as `format` ("vn", "mip", ...); with `only`,
+// only measurements of that kind.
+inline SimLog make_sim_log(std::string_view name, std::string_view format, double seconds,
+                           std::optional<MeasurementKind> only = std::nullopt) {
   sim::Simulator simulator(sim::make_scenario(name));
   auto encoder = apps::find_frontend(format)->make_encoder();
   SimLog log;
@@ -31,6 +34,7 @@ inline SimLog make_sim_log(std::string_view name, std::string_view format, doubl
   const std::int64_t end_ns = log.start_ns + static_cast<std::int64_t>(seconds * 1e9);
   Measurement m;
   while (simulator.next(m) && simulator.delivery_time_ns() <= end_ns) {
+    if (only && kind_of(m) != *only) continue;
     if (encoder->encode(m, log.bytes)) log.pieces.push_back({log.bytes.size(), simulator.delivery_time_ns()});
   }
   return log;

@@ -32,6 +32,14 @@ inline std::filesystem::path scratch_dir() {
   return dir;
 }
 
+// A fixture whose tests each get a fresh scratch_dir() in dir_, removed afterwards.
+class ScratchDirTest : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = scratch_dir(); }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::filesystem::path dir_;
+};
+
 inline std::string write_file(const std::filesystem::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
   return path.string();
