@@ -93,6 +93,7 @@ void fill_nav_solution(const FilterCore& c, const FilterOptions& o, TimeSource t
   if (seconds_since(x.time_ns, c.gnss.last_heading_ns) < o.gnss_timeout_s) {
     out.status_flags |= NavSolution::kStatusDualAntennaHeading;
   }
+  if (c.gnss.baseline.offset_detected) out.status_flags |= NavSolution::kStatusHeadingOffset;
 }
 
 }  // namespace navfuse::filter

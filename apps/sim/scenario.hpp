@@ -12,6 +12,12 @@
 
 namespace navfuse::sim {
 
+inline GnssSpec disabled_gnss() {
+  GnssSpec g;
+  g.enabled = false;
+  return g;
+}
+
 struct Scenario {
   std::string name;
   std::uint64_t seed = 1;  // every random draw derives from it: same seed, same output
@@ -21,6 +27,9 @@ struct Scenario {
   TrajectorySpec trajectory;
   ImuSpec imu;
   GnssSpec gnss;
+  // A second receiver with its own antenna (lever_arm_m) and its own noise draws, e.g. the GNSS2
+  // fixes of a CV7 or VN-300; off (enabled = false) unless a scenario asks for it.
+  GnssSpec second_gnss = disabled_gnss();
   WheelSpec wheel;
 };
 
