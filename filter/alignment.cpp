@@ -137,9 +137,10 @@ void set_heading(FilterCore& c, double yaw_rad, double std_rad) {
 }
 
 void place_at_fix(FilterCore& c, const FilterOptions& o, const GnssPosition& fix) {
-  (void)o;
+  const Eigen::Vector3d lever_b =
+      antenna_of_receiver(c.x, o.gnss_secondary_lever_arm_m, fix.receiver_id).lever_arm_m;
   const Eigen::Matrix3d c_nb = c.x.q_nb.toRotationMatrix();
-  const Eigen::Vector3d lever_n = c_nb * c.x.gnss_lever_arm_m;
+  const Eigen::Vector3d lever_n = c_nb * lever_b;
   // The fix is older than the state by (state time - fix time): move along the velocity.
   const double age_s = static_cast<double>(c.x.time_ns - fix.header.time_ns) * 1e-9;
   const geo::Llh antenna{fix.lat_rad, fix.lon_rad, fix.height_m};
@@ -151,7 +152,7 @@ void place_at_fix(FilterCore& c, const FilterOptions& o, const GnssPosition& fix
                             ? fix.cov_ned_m2
                             : Eigen::Matrix3d(default_gnss_position_std_m(fix.fix).array().square().matrix().asDiagonal());
   if (!c.mode.heading_known) {
-    const double lever_h_sq = c.x.gnss_lever_arm_m.head<2>().squaredNorm();
+    const double lever_h_sq = lever_b.head<2>().squaredNorm();
     cov(0, 0) += lever_h_sq;
     cov(1, 1) += lever_h_sq;
   }

@@ -20,7 +20,7 @@
 //   measurements (exact, not an approximation). Older ones are rejected ("too_late").
 // - Bad inputs (NaN/inf: "nan"; uncertainty <= 0 on a valid axis: "negative_std"; no valid axis
 //   or impossible values: "invalid") are rejected before they reach the state. Kinds the filter
-//   does not use (measurement_kinds.hpp: device solutions, magnetometer, pressure, wheel ticks)
+//   does not use (measurement_kinds.hpp: device solutions, magnetometer, pressure)
 //   are counted as ignored.
 // - Modes follow MIP's filter states: Init -> Vertical Gyro (levelled while stationary) -> AHRS
 //   (heading from dual antenna, external heading or FilterOptions::initial_heading_rad) -> Full
@@ -71,7 +71,8 @@ class Engine {
   const FilterOptions& options() const { return options_; }
 
   void reset(std::uint32_t mask);
-  // antenna 0: primary (position/velocity), 1: secondary (dual-antenna heading baseline).
+  // antenna 0: primary (position/velocity), 1: secondary (dual-antenna heading baseline, and
+  // where fixes of receiver_id 1 are measured).
   void set_gnss_lever_arm(const Eigen::Vector3d& lever_arm_m, int antenna = 0);
   // Sensor -> vehicle roll, pitch, yaw (rad, 3-2-1); like MIP, a new mounting restarts the filter.
   void set_mounting(const Eigen::Vector3d& rpy_rad);

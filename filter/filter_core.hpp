@@ -3,6 +3,7 @@
 // of late measurements, so it holds no pointers into the Engine and no heap memory.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 
@@ -58,8 +59,18 @@ struct StationaryState {
   Eigen::Vector3d reference_force = Eigen::Vector3d::Zero();  // mean specific force when it began
 };
 
+// Dual-antenna baseline against course over ground (control/baseline_check.hpp).
+struct BaselineCheckState {
+  double antenna_yaw_rad = 0.0;  // vehicle yaw implied by the latest GNSS heading
+  std::int64_t antenna_yaw_ns = INT64_MIN;
+  int mismatches = 0;            // consecutive epochs of disagreement
+  bool offset_detected = false;  // flagged: GNSS heading rejected, heading from the course
+  double offset_rad = 0.0;       // antenna yaw minus course when flagged
+};
+
 // GNSS control (control/gnss_control.cpp).
 struct GnssControlState {
+  BaselineCheckState baseline;
   std::int64_t last_position_ns = INT64_MIN;     // last accepted (or re-anchored) position
   std::int64_t position_reject_since_ns = INT64_MIN;  // start of the current rejection run
   std::int64_t last_velocity_ns = INT64_MIN;
@@ -73,7 +84,15 @@ struct GnssControlState {
   double last_speed_mps = 0.0;  // GNSS ground speed, for stationary detection
 };
 
+// The latest count of one tick stream (input stream and channel count), kept to difference the
+// next one against (control/odometry_control.cpp).
+struct TickReference {
+  bool have = false;
+  WheelTicks ticks;
+};
+
 struct OdometryState {
+  std::array<TickReference, 4> tick_references{};  // a few tick streams at once (wheels + vehicle)
   std::int64_t last_nhc_ns = INT64_MIN;
   std::int64_t last_speed_ns = INT64_MIN;
   double last_speed_mps = 0.0;

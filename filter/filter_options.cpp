@@ -31,6 +31,10 @@ FilterOptions options_from_config(const navfuse::config::Config& config) {
   o.gnss_secondary_lever_arm_m = vec(config.gnss.secondary_lever_arm_m);
   o.wheel_lever_arm_m = vec(config.wheel.lever_arm_m);
   o.wheel_speed_std_mps = config.wheel.speed_std_mps;
+  o.wheel_m_per_tick = config.wheel.m_per_tick;
+  // The odometer scale error is a state unless its prior is 0 (the scale is trusted as given).
+  o.initial_wheel_scale_std = config.wheel.initial_scale_std;
+  o.states.wheel_scale = config.wheel.initial_scale_std > 0.0;
 
   // Which constraints hold (Groves 2nd ed. §13.1.3 land-vehicle NHC; §16.2.4 ZUPT for
   // pedestrians). Only a wheeled vehicle cannot slip sideways; a boat or an aircraft is never

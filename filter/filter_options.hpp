@@ -41,6 +41,7 @@ struct FilterOptions {
 
   // Odometry and land-vehicle constraints.
   double wheel_speed_std_mps = 0.05;  // used when a measurement reports 0
+  double wheel_m_per_tick = 0.0;      // tick-to-metre scale of tick counters; 0: ticks not fused
   double initial_wheel_scale_std = 0.02;
   bool land_vehicle = true;           // apply the non-holonomic constraint (platform: land)
   // The point that does not slip sideways or leave the road (the rear-axle centre of a car);

@@ -15,6 +15,9 @@ std::string_view to_string(RejectReason reason) {
     case RejectReason::kChi2Gate: return "chi2_gate";
     case RejectReason::kNumerical: return "numerical";
     case RejectReason::kOverflow: return "overflow";
+    case RejectReason::kNoReference: return "no_reference";
+    case RejectReason::kNoScale: return "no_scale";
+    case RejectReason::kBaselineMismatch: return "baseline_mismatch";
     case RejectReason::kCount: break;
   }
   return "unknown";

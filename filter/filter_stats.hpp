@@ -22,6 +22,9 @@ enum class RejectReason : std::uint8_t {
   kChi2Gate,        // innovation outside the chi-square gate
   kNumerical,       // singular innovation covariance
   kOverflow,        // pending-measurement buffer full
+  kNoReference,     // a tick count with no earlier count of its stream to difference (first, after a gap)
+  kNoScale,         // tick counts while no tick-to-metre scale is configured (wheel.m_per_tick)
+  kBaselineMismatch,  // dual-antenna heading after its baseline was found off the course over ground
   kCount,
 };
 std::string_view to_string(RejectReason reason);

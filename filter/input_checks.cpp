@@ -76,6 +76,18 @@ Reason check_input(const VehicleSpeed& m) {
   return std::nullopt;
 }
 
+Reason check_input(const WheelTicks& m) {
+  if (!std::isfinite(m.period_s)) return RejectReason::kNan;
+  // One counter (a vehicle odometer) or four wheels; counts inside the counter's range.
+  if (m.channels != 1 && m.channels != 4) return RejectReason::kInvalid;
+  const std::uint32_t channel_bits = m.channels == 1 ? WheelTicks::kValidFrontLeft : 0b1111u;
+  if ((m.header.valid & channel_bits) == 0) return RejectReason::kInvalid;
+  for (std::size_t i = 0; i < m.channels; ++i) {
+    if (m.rollover != 0 && m.ticks[i] >= m.rollover) return RejectReason::kInvalid;
+  }
+  return std::nullopt;
+}
+
 Reason check_input(const ExternalPosition& m) {
   if (!finite(m.value) || !finite(m.std_m) || !finite(m.lever_arm_m)) return RejectReason::kNan;
   return check_std(m.std_m, m.header.valid);

@@ -16,6 +16,7 @@ std::optional<RejectReason> check_input(const GnssVelocity& m);
 std::optional<RejectReason> check_input(const GnssHeading& m);
 std::optional<RejectReason> check_input(const WheelSpeeds& m);
 std::optional<RejectReason> check_input(const VehicleSpeed& m);
+std::optional<RejectReason> check_input(const WheelTicks& m);
 std::optional<RejectReason> check_input(const ExternalPosition& m);
 std::optional<RejectReason> check_input(const ExternalVelocity& m);
 std::optional<RejectReason> check_input(const ExternalHeading& m);

@@ -55,8 +55,8 @@ inline constexpr MeasurementKindTable kMeasurementKinds{{
      &fuse_kind<MeasurementKind::kWheelSpeed>},
     {MeasurementKind::kVehicleSpeed, true, &check_kind<MeasurementKind::kVehicleSpeed>,
      &fuse_kind<MeasurementKind::kVehicleSpeed>},
-    // No tick-count model yet (a tick-to-metre scale state and the count difference over time).
-    {MeasurementKind::kWheelTicks, false, nullptr, nullptr},
+    {MeasurementKind::kWheelTicks, true, &check_kind<MeasurementKind::kWheelTicks>,
+     &fuse_kind<MeasurementKind::kWheelTicks>},
     {MeasurementKind::kExternalPosition, true, &check_kind<MeasurementKind::kExternalPosition>,
      &fuse_kind<MeasurementKind::kExternalPosition>},
     {MeasurementKind::kExternalVelocity, true, &check_kind<MeasurementKind::kExternalVelocity>,

@@ -10,6 +10,8 @@ namespace {
 
 // Status evidence older than this no longer sets its flag.
 constexpr double kStatusHold_s = 1.0;
+// The std of a heading known to be nothing: uniform over the circle, pi / sqrt(3).
+constexpr double kUnknownHeadingStd_rad = 1.8137993642342178;
 
 // Euler-angle errors from the NED attitude error phi: d(roll, pitch, yaw) = M phi, the inverse of
 // the Euler-rate relation with the body rates rotated to NED (Titterton & Weston ch. 3).
@@ -35,8 +37,15 @@ void fill_nav_solution(const FilterCore& c, const FilterOptions& o, TimeSource t
   out.header.time_source = time_source;
   out.mode = mode.mode;
   const bool navigating = mode.mode == NavMode::kNavigation || mode.mode == NavMode::kDeadReckoning;
-  if (mode.mode == NavMode::kNavigation &&
-      seconds_since(x.time_ns, c.gnss.last_position_ns) <= o.gnss_timeout_s) {
+  // Before the heading is known (vertical gyro) the filter already holds the position of the GNSS
+  // fixes (placed at each, place_at_fix) and, moving, their velocity (reset to each) or, at rest,
+  // the zero velocity of the ZUPTs: a device reports them then, with the heading marked invalid.
+  const bool gnss_current = seconds_since(x.time_ns, c.gnss.last_position_ns) <= o.gnss_timeout_s;
+  const bool position_known = navigating || (mode.levelled && mode.position_known && gnss_current);
+  const bool velocity_known =
+      navigating || (position_known && (c.stationary.stationary ||
+                                        seconds_since(x.time_ns, c.gnss.last_velocity_ns) <= o.gnss_timeout_s));
+  if ((mode.mode == NavMode::kNavigation || (!navigating && position_known)) && gnss_current) {
     out.gnss_fix = c.gnss.last_fix;
   }
 
@@ -58,6 +67,9 @@ void fill_nav_solution(const FilterCore& c, const FilterOptions& o, TimeSource t
   const Eigen::Matrix3d m = euler_from_phi(out.rpy_rad);
   out.att_std_rpy_rad =
       (m * p.block<3, 3>(sx::kAtt, sx::kAtt) * m.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
+  // Until the heading is known its error state is held at zero (relative heading, not
+  // estimated): the covariance says nothing of it, so report the std of no knowledge at all.
+  if (!mode.heading_known) out.att_std_rpy_rad.z() = kUnknownHeadingStd_rad;
 
   // Biases are estimated in the vehicle frame and reported in the sensor frame (MIP convention).
   const Eigen::Matrix3d c_sv = rot::dcm_from_rpy(o.mounting_rpy_rad).transpose();
@@ -76,10 +88,8 @@ void fill_nav_solution(const FilterCore& c, const FilterOptions& o, TimeSource t
     out.header.valid |= NavSolution::kValidAttitude | NavSolution::kValidAttitudeStd | NavSolution::kValidBiases;
   }
   if (mode.levelled && mode.heading_known) out.header.valid |= NavSolution::kValidHeading;
-  if (navigating) {
-    out.header.valid |= NavSolution::kValidPosition | NavSolution::kValidVelocity |
-                        NavSolution::kValidPositionStd | NavSolution::kValidVelocityStd;
-  }
+  if (position_known) out.header.valid |= NavSolution::kValidPosition | NavSolution::kValidPositionStd;
+  if (velocity_known) out.header.valid |= NavSolution::kValidVelocity | NavSolution::kValidVelocityStd;
 
   if (mode.mode == NavMode::kDeadReckoning) out.status_flags |= NavSolution::kStatusGnssOutage;
   if (c.stationary.stationary) out.status_flags |= NavSolution::kStatusStationary;
@@ -93,6 +103,7 @@ void fill_nav_solution(const FilterCore& c, const FilterOptions& o, TimeSource t
   if (seconds_since(x.time_ns, c.gnss.last_heading_ns) < o.gnss_timeout_s) {
     out.status_flags |= NavSolution::kStatusDualAntennaHeading;
   }
+  if (c.gnss.baseline.offset_detected) out.status_flags |= NavSolution::kStatusHeadingOffset;
 }
 
 }  // namespace navfuse::filter

@@ -58,14 +58,20 @@ void CsvPoseWriter::write(const OutputEpoch& epoch) {
   row_ += to_string(s.header.time_source);
   row_ += ',';
   row_ += to_string(s.mode);
-  append_fixed(row_, s.lat_rad * d, 10);
-  append_fixed(row_, s.lon_rad * d, 10);
-  append_fixed(row_, s.height_m, 4);
-  for (int i = 0; i < 3; ++i) append_fixed(row_, s.vel_ned_mps[i], 5);
-  for (int i = 0; i < 3; ++i) append_fixed(row_, s.rpy_rad[i] * d, 6);
-  for (int i = 0; i < 3; ++i) append_fixed(row_, s.pos_std_ned_m[i], 4);
-  for (int i = 0; i < 3; ++i) append_fixed(row_, s.vel_std_ned_mps[i], 5);
-  for (int i = 0; i < 3; ++i) append_fixed(row_, s.att_std_rpy_rad[i] * d, 6);
+  // What the solution does not have is written as "nan" (the FusionEngine Pose convention).
+  const auto valid = [&](std::uint32_t bit) { return (s.header.valid & bit) != 0; };
+  const auto put = [&](double value, int decimals, std::uint32_t bit) {
+    append_fixed(row_, valid(bit) ? value : std::nan(""), decimals);
+  };
+  put(s.lat_rad * d, 10, NavSolution::kValidPosition);
+  put(s.lon_rad * d, 10, NavSolution::kValidPosition);
+  put(s.height_m, 4, NavSolution::kValidPosition);
+  for (int i = 0; i < 3; ++i) put(s.vel_ned_mps[i], 5, NavSolution::kValidVelocity);
+  for (int i = 0; i < 2; ++i) put(s.rpy_rad[i] * d, 6, NavSolution::kValidAttitude);
+  put(s.rpy_rad[2] * d, 6, valid(NavSolution::kValidAttitude) ? NavSolution::kValidHeading : 0u);
+  for (int i = 0; i < 3; ++i) put(s.pos_std_ned_m[i], 4, NavSolution::kValidPositionStd);
+  for (int i = 0; i < 3; ++i) put(s.vel_std_ned_mps[i], 5, NavSolution::kValidVelocityStd);
+  for (int i = 0; i < 3; ++i) put(s.att_std_rpy_rad[i] * d, 6, NavSolution::kValidAttitudeStd);
   row_ += '\n';
   file_.write(row_);
 }

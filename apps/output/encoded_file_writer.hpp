@@ -1,4 +1,4 @@
-// A protocol stream written to a file (replay's --fe-out, --mip-out): the bytes the protocol's
+// A protocol stream written to a file (replay's --fe-out, --mip-out, --nmea-out): the bytes the protocol's
 // epoch encoder appends at each epoch, at the encoder's default rates (the DESIGN.md contract),
 // into an OutputFile. The same encoders drive run's device-emulating links (apps/run), so a
 // file and a link carry the same bytes for the same epochs.
@@ -10,6 +10,7 @@
 
 #include "apps/output/fe_epoch_encoder.hpp"
 #include "apps/output/mip_epoch_encoder.hpp"
+#include "apps/output/nmea_epoch_encoder.hpp"
 #include "apps/output/output_file.hpp"
 #include "apps/output/pose_writer.hpp"
 
@@ -34,5 +35,6 @@ class EncodedFileWriter final : public PoseWriter {
 
 using FeFileWriter = EncodedFileWriter<FeEpochEncoder>;    // --fe-out
 using MipFileWriter = EncodedFileWriter<MipEpochEncoder>;  // --mip-out
+using NmeaFileWriter = EncodedFileWriter<NmeaEpochEncoder>;  // --nmea-out
 
 }  // namespace navfuse::apps

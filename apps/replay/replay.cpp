@@ -129,7 +129,8 @@ ReplayResult run_replay(const ReplayOptions& options) {
   }
   if (!options.truth_path.empty()) input_paths.push_back(options.truth_path);
   check_output_paths(input_paths,
-                     {{"--fe-out", options.fe_out}, {"--mip-out", options.mip_out}, {"--csv", options.csv_out}});
+                     {{"--fe-out", options.fe_out}, {"--mip-out", options.mip_out}, {"--csv", options.csv_out},
+                      {"--nmea-out", options.nmea_out}});
   const MeasurementMerger::Options merge{.chunk_bytes = 16 * 1024, .allow_truncated = options.allow_truncated};
   MeasurementMerger merger = recording ? MeasurementMerger(*recording, merge) : MeasurementMerger(specs, merge);
   std::unique_ptr<TruthAccuracy> accuracy;
@@ -140,6 +141,7 @@ ReplayResult run_replay(const ReplayOptions& options) {
   if (!options.fe_out.empty()) outputs.add(std::make_unique<FeFileWriter>(options.fe_out));
   if (!options.mip_out.empty()) outputs.add(std::make_unique<MipFileWriter>(options.mip_out));
   if (!options.csv_out.empty()) outputs.add(std::make_unique<CsvPoseWriter>(options.csv_out));
+  if (!options.nmea_out.empty()) outputs.add(std::make_unique<NmeaFileWriter>(options.nmea_out));
   const LcmPoseWriter* lcm = nullptr;
   if (options.lcm_url) {
     auto writer = std::make_unique<LcmPoseWriter>(*options.lcm_url);

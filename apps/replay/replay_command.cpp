@@ -76,6 +76,7 @@ void add_replay_command(CLI::App& root, int& exit_code) {
   sub->add_option("--fe-out", o.fe_out, "Write FusionEngine Pose/PoseAux/GNSSInfo/IMUOutput to this file");
   sub->add_option("--mip-out", o.mip_out, "Write MIP filter (0x82) packets to this file");
   sub->add_option("--csv", o.csv_out, "Write one CSV row per pose to this file");
+  sub->add_option("--nmea-out", o.nmea_out, "Write NMEA GGA/RMC/HDT sentences (at most 10 Hz) to this file");
   args->lcm = sub->add_option("--lcm", args->lcm_url,
                               "Publish NAVFUSE_POSE and NAVFUSE_IMU at the pose rate on LCM [URL]")
                    ->expected(0, 1);

@@ -3,8 +3,11 @@
 #include <chrono>
 
 #include "apps/common/command_error.hpp"
+#include "apps/output/csv_pose_writer.hpp"
+#include "apps/output/output_paths.hpp"
 #include "apps/run/fe_device_emulator.hpp"
 #include "apps/run/mip_device_emulator.hpp"
+#include "apps/run/nmea_output_link.hpp"
 #include "apps/run/run_log.hpp"
 
 namespace navfuse::apps {
@@ -50,6 +53,15 @@ NavProcess::NavProcess(const RunOptions& options)
   for (const std::string& arg : options_.inputs) endpoints.push_back(parse_input_endpoint(arg));
   const io::Uri fe_uri = options_.fe_out.empty() ? io::Uri{} : parse_output_uri(options_.fe_out, "--fe-out");
   const io::Uri mip_uri = options_.mip_out.empty() ? io::Uri{} : parse_output_uri(options_.mip_out, "--mip-out");
+  const io::Uri nmea_uri =
+      options_.nmea_out.empty() ? io::Uri{} : parse_output_uri(options_.nmea_out, "--nmea-out");
+  if (!options_.csv_out.empty()) {
+    std::vector<std::string> input_paths;
+    for (const InputEndpoint& e : endpoints) {
+      if (e.uri.scheme == io::Scheme::kFile) input_paths.push_back(e.uri.path);
+    }
+    check_output_paths(input_paths, {{"--csv", options_.csv_out}});
+  }
   if (options_.configure_device) {
     for (const InputEndpoint& e : endpoints) {
       if (e.frontend == nullptr && e.uri.scheme != io::Scheme::kFile) {
@@ -76,6 +88,11 @@ NavProcess::NavProcess(const RunOptions& options)
     outputs_.push_back(
         std::make_unique<OutputSink>("--mip-out", mip_uri, std::make_unique<MipDeviceEmulator>(), queue_, actions_));
   }
+  if (!options_.nmea_out.empty()) {
+    outputs_.push_back(
+        std::make_unique<OutputSink>("--nmea-out", nmea_uri, std::make_unique<NmeaOutputLink>(), queue_, actions_));
+  }
+  if (!options_.csv_out.empty()) files_.add(std::make_unique<CsvPoseWriter>(options_.csv_out));
   if (options_.lcm) lcm_ = std::make_unique<LcmService>(options_.lcm_url, queue_, latency_);
   if (!options_.corrections.empty()) {
     if (options_.corrections_to < 0 || static_cast<std::size_t>(options_.corrections_to) >= inputs_.size()) {
@@ -95,6 +112,7 @@ void NavProcess::start() {
   next_status_ns_ = started_ns_ + static_cast<std::int64_t>(options_.status_interval_s * 1e9);
   if (lcm_) lcm_->start();
   for (auto& out : outputs_) out->start();
+  if (!files_.empty()) file_thread_ = std::make_unique<PoseOutputThread>(files_);
   filter_thread_ = std::thread([this] { filter_loop(); });
   for (auto& in : inputs_) in->start();
   if (corrections_) corrections_->start();
@@ -112,6 +130,14 @@ void NavProcess::stop() {
   stopped_ns_ = monotonic_ns();
   for (auto& out : outputs_) out->stop();
   if (lcm_) lcm_->stop();
+  if (file_thread_ && !file_failed_) {
+    try {
+      file_thread_->finish();
+      files_.commit();
+    } catch (const CommandError& e) {
+      log_event(e.what());
+    }
+  }
 }
 
 bool NavProcess::inputs_ended() const {
@@ -146,6 +172,15 @@ void NavProcess::on_fused(const Measurement& m) {
 
 void NavProcess::on_epoch(const OutputEpoch& epoch, const filter::Engine&) {
   for (auto& out : outputs_) out->post(epoch);
+  if (file_thread_ && !file_failed_) {
+    // A file that cannot be written (disk full) ends that output, not the nav process.
+    try {
+      file_thread_->post(epoch);
+    } catch (const CommandError& e) {
+      log_event(e.what());
+      file_failed_ = true;
+    }
+  }
   if (lcm_) lcm_->post_epoch(epoch);
 }
 

@@ -20,6 +20,8 @@
 
 #include "apps/common/summary.hpp"
 #include "apps/fusion/fusion_runner.hpp"
+#include "apps/output/pose_output_thread.hpp"
+#include "apps/output/pose_outputs.hpp"
 #include "apps/run/arrived_measurement.hpp"
 #include "apps/run/corrections_forwarder.hpp"
 #include "apps/run/engine_action.hpp"
@@ -74,6 +76,11 @@ class NavProcess final : private FusionObserver {
   std::vector<std::unique_ptr<OutputSink>> outputs_;
   std::unique_ptr<LcmService> lcm_;
   std::unique_ptr<CorrectionsForwarder> corrections_;
+  // File outputs (--csv): written on a thread of their own, as in replay; a file never drops an
+  // epoch, so this thread holds the filter back if the disk cannot keep up.
+  PoseOutputs files_;
+  std::unique_ptr<PoseOutputThread> file_thread_;
+  bool file_failed_ = false;  // a write failed: the files are abandoned (filter thread only)
 
   // Filter thread state.
   StatusReporter status_;

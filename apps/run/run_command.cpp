@@ -76,6 +76,8 @@ void add_run_command(CLI::App& root, int& exit_code) {
   sub->add_option("--in", args->in_options, input_help + " (repeatable; the same as INPUT)");
   sub->add_option("--fe-out", opt->fe_out, "FusionEngine output URI (also accepts FusionEngine commands)");
   sub->add_option("--mip-out", opt->mip_out, "MIP 0x82 output URI (also accepts MIP commands and 0x13 aiding)");
+  sub->add_option("--nmea-out", opt->nmea_out, "NMEA GGA/RMC/HDT output URI (at most 10 Hz), e.g. for an autopilot");
+  sub->add_option("--csv", opt->csv_out, "Write one CSV row per pose to this file (as replay --csv)");
   CLI::Option* lcm =
       sub->add_option("--lcm", opt->lcm_url, "Publish NAVFUSE_POSE/STATUS/IMU/GNSS and take NAVFUSE_AID_* on LCM [URL]")
           ->expected(0, 1);

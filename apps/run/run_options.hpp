@@ -12,6 +12,8 @@ struct RunOptions {
   std::vector<std::string> inputs;  // [FORMAT:]URI
   std::string fe_out;               // URI; empty: none
   std::string mip_out;
+  std::string nmea_out;             // URI: NMEA GGA/RMC/HDT (apps/output/nmea_epoch_encoder.hpp)
+  std::string csv_out;              // file: the CSV of replay --csv
   bool lcm = false;
   std::string lcm_url;              // empty: LCM's default (LCM_DEFAULT_URL or udpm)
   bool configure_device = false;

@@ -152,7 +152,7 @@ GnssModel::Epoch GnssModel::make_epoch(const TruthSample& truth, double t_s, Gns
   pos.cov_ned_m2 = sigma.cwiseAbs2().asDiagonal();
   pos.fix = fix;
   pos.num_sats = noise.num_sats;
-  pos.receiver_id = 0;
+  pos.receiver_id = spec_.receiver_id;
   epoch.has_position = true;
 
   if (spec_.velocity) {
@@ -166,6 +166,7 @@ GnssModel::Epoch GnssModel::make_epoch(const TruthSample& truth, double t_s, Gns
         lever_arm_velocity_ned(truth, spec_.lever_arm_m) + vel_sigma.cwiseProduct(vel_white);
     vel.cov_ned_m2ps2 = vel_sigma.cwiseAbs2().asDiagonal();
     vel.fix = fix;
+    vel.receiver_id = spec_.receiver_id;
     epoch.has_velocity = true;
   }
 

@@ -61,6 +61,7 @@ struct GnssJump {
 
 struct GnssSpec {
   bool enabled = true;
+  std::uint8_t receiver_id = 0;  // stamped on the fixes (0 primary receiver, 1 the second one)
   double rate_hz = 5.0;  // fixes on the GPS-time grid of 1/rate (whole ns)
   GnssFixType fix = GnssFixType::kFix3D;
   GnssNoise noise = default_gnss_noise(GnssFixType::kFix3D);

@@ -24,6 +24,8 @@ Simulator::Simulator(const Scenario& scenario)
       trajectory_(scenario.trajectory, scenario.start_time_ns),
       imu_(scenario.imu, scenario.seed),
       gnss_(scenario.gnss, scenario.seed),
+      // Its own draws: a second receiver's errors are independent of the first's.
+      second_gnss_(scenario.second_gnss, ~scenario.seed),
       wheel_(scenario.wheel, scenario.seed) {
   const std::int64_t period = imu_.period_ns();
   if (period % scenario_.imu.substeps != 0) {
@@ -43,6 +45,7 @@ Simulator::Simulator(const Scenario& scenario)
   last_delivery_ns_ = scenario_.start_time_ns;
 
   next_gnss_ns_ = grid_at_or_after(scenario_.start_time_ns, gnss_.period_ns());
+  next_second_gnss_ns_ = grid_at_or_after(scenario_.start_time_ns, second_gnss_.period_ns());
   next_wheel_ns_ = grid_at_or_after(scenario_.start_time_ns, wheel_.period_ns());
   // Enough for every measurement in flight with the longest latency at the highest rates; the
   // queue grows only if a scenario needs more.
@@ -112,26 +115,8 @@ void Simulator::step() {
 
 void Simulator::sensor_events(std::int64_t t_end_ns) {
   // Epochs stamped in (previous IMU time, t_end]; the very first interval also takes the start.
-  while (gnss_.spec().enabled && next_gnss_ns_ <= t_end_ns) {
-    const std::int64_t t = next_gnss_ns_;
-    next_gnss_ns_ += gnss_.period_ns();
-    const TruthSample truth = truth_in_interval(t);
-    const GnssModel::Epoch epoch =
-        gnss_.make_epoch(truth, seconds_since_start(t), gnss_pos_, gnss_vel_, gnss_heading_);
-    const std::int64_t delivery = t + gnss_.latency_ns();
-    if (epoch.has_position) {
-      scratch_ = gnss_pos_;
-      push(delivery);
-    }
-    if (epoch.has_velocity) {
-      scratch_ = gnss_vel_;
-      push(delivery);
-    }
-    if (epoch.has_heading) {
-      scratch_ = gnss_heading_;
-      push(delivery);
-    }
-  }
+  gnss_events(gnss_, next_gnss_ns_, t_end_ns);
+  gnss_events(second_gnss_, next_second_gnss_ns_, t_end_ns);
   while (wheel_.enabled() && next_wheel_ns_ <= t_end_ns) {
     const std::int64_t t = next_wheel_ns_;
     next_wheel_ns_ += wheel_.period_ns();
@@ -143,6 +128,38 @@ void Simulator::sensor_events(std::int64_t t_end_ns) {
     }
     if (wheel_.spec().wheel_speeds) {
       wheel_.make_wheel_speeds(truth, scratch_.emplace<WheelSpeeds>());
+      push(delivery);
+    }
+    wheel_.advance_ticks(truth);
+    if (wheel_.spec().wheel_ticks) {
+      wheel_.make_wheel_ticks(truth, scratch_.emplace<WheelTicks>());
+      push(delivery);
+    }
+    if (wheel_.spec().vehicle_ticks) {
+      wheel_.make_vehicle_ticks(truth, scratch_.emplace<WheelTicks>());
+      push(delivery);
+    }
+  }
+}
+
+void Simulator::gnss_events(GnssModel& gnss, std::int64_t& next_ns, std::int64_t t_end_ns) {
+  while (gnss.spec().enabled && next_ns <= t_end_ns) {
+    const std::int64_t t = next_ns;
+    next_ns += gnss.period_ns();
+    const TruthSample truth = truth_in_interval(t);
+    const GnssModel::Epoch epoch =
+        gnss.make_epoch(truth, seconds_since_start(t), gnss_pos_, gnss_vel_, gnss_heading_);
+    const std::int64_t delivery = t + gnss.latency_ns();
+    if (epoch.has_position) {
+      scratch_ = gnss_pos_;
+      push(delivery);
+    }
+    if (epoch.has_velocity) {
+      scratch_ = gnss_vel_;
+      push(delivery);
+    }
+    if (epoch.has_heading) {
+      scratch_ = gnss_heading_;
       push(delivery);
     }
   }

@@ -64,6 +64,7 @@ class Simulator {
   void step();  // generates IMU sample k and every other measurement stamped in its interval
   void push(std::int64_t delivery_ns);  // queues scratch_
   void sensor_events(std::int64_t t_end_ns);
+  void gnss_events(GnssModel& gnss, std::int64_t& next_ns, std::int64_t t_end_ns);
   TruthSample truth_in_interval(std::int64_t time_ns) const;
   double seconds_since_start(std::int64_t time_ns) const;
 
@@ -71,12 +72,14 @@ class Simulator {
   Trajectory trajectory_;
   ImuModel imu_;
   GnssModel gnss_;
+  GnssModel second_gnss_;
   WheelModel wheel_;
   std::int64_t end_time_ns_ = 0;
   std::int64_t imu_count_ = 0;
   std::int64_t k_ = 0;  // IMU samples generated so far
   std::int64_t substep_ns_ = 0;
   std::int64_t next_gnss_ns_ = 0;   // next epoch on the GNSS grid
+  std::int64_t next_second_gnss_ns_ = 0;
   std::int64_t next_wheel_ns_ = 0;  // next epoch on the wheel grid
   std::vector<TruthSample> nodes_;  // substep truth nodes of the current interval
   TruthSample initial_truth_;

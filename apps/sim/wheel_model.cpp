@@ -47,7 +47,7 @@ double WheelModel::measure(double true_speed_mps) {
 }
 
 void WheelModel::make_vehicle_speed(const TruthSample& truth, VehicleSpeed& out) {
-  const double true_speed = truth.stationary ? 0.0 : point_velocity_vehicle(truth, spec_.lever_arm_m).x();
+  const double true_speed = true_point_speed(truth);
   out = VehicleSpeed{};
   out.header.time_ns = truth.time_ns;
   out.header.time_source = TimeSource::kGps;
@@ -58,29 +58,83 @@ void WheelModel::make_vehicle_speed(const TruthSample& truth, VehicleSpeed& out)
   out.speed_std_mps = spec_.reported_std_mps > 0.0 ? spec_.reported_std_mps : spec_.noise_std_mps;
 }
 
-void WheelModel::make_wheel_speeds(const TruthSample& truth, WheelSpeeds& out) {
+std::array<double, 4> WheelModel::true_wheel_speeds(const TruthSample& truth) const {
   // Contact points: FL, FR, RL, RR (core order), the rear pair centred on lever_arm_m.
   const double half_track = 0.5 * spec_.track_m;
   const Eigen::Vector3d offsets[4] = {{spec_.wheelbase_m, -half_track, 0.0},
                                       {spec_.wheelbase_m, half_track, 0.0},
                                       {0.0, -half_track, 0.0},
                                       {0.0, half_track, 0.0}};
+  std::array<double, 4> speeds{};
+  if (truth.stationary) return speeds;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Eigen::Vector3d v = point_velocity_vehicle(truth, spec_.lever_arm_m + offsets[i]);
+    speeds[i] = std::copysign(v.head<2>().norm(), v.x());
+  }
+  return speeds;
+}
+
+double WheelModel::true_point_speed(const TruthSample& truth) const {
+  return truth.stationary ? 0.0 : point_velocity_vehicle(truth, spec_.lever_arm_m).x();
+}
+
+void WheelModel::make_wheel_speeds(const TruthSample& truth, WheelSpeeds& out) {
   out = WheelSpeeds{};
   out.header.time_ns = truth.time_ns;
   out.header.time_source = TimeSource::kGps;
   out.header.valid = WheelSpeeds::kValidFrontLeft | WheelSpeeds::kValidFrontRight |
                      WheelSpeeds::kValidRearLeft | WheelSpeeds::kValidRearRight;
-  for (int i = 0; i < 4; ++i) {
-    double true_speed = 0.0;
-    if (!truth.stationary) {
-      const Eigen::Vector3d v = point_velocity_vehicle(truth, spec_.lever_arm_m + offsets[i]);
-      true_speed = std::copysign(v.head<2>().norm(), v.x());
-    }
-    out.speed_mps[static_cast<std::size_t>(i)] = measure(true_speed);
-  }
+  const std::array<double, 4> speeds = true_wheel_speeds(truth);
+  for (std::size_t i = 0; i < 4; ++i) out.speed_mps[i] = measure(speeds[i]);
   out.gear = gear_for(truth.speed_mps);
   out.is_signed = spec_.is_signed;
   out.speed_std_mps = spec_.reported_std_mps > 0.0 ? spec_.reported_std_mps : spec_.noise_std_mps;
+}
+
+void WheelModel::advance_ticks(const TruthSample& truth) {
+  const std::array<double, 4> wheels = true_wheel_speeds(truth);
+  const std::array<double, 5> speeds{wheels[0], wheels[1], wheels[2], wheels[3], true_point_speed(truth)};
+  const double dt = last_tick_ns_ == INT64_MIN ? 0.0 : static_cast<double>(truth.time_ns - last_tick_ns_) * 1e-9;
+  for (std::size_t i = 0; i < speeds.size(); ++i) {
+    const double v = spec_.is_signed ? speeds[i] : std::abs(speeds[i]);
+    distance_m_[i] += (1.0 + spec_.scale_error) * 0.5 * (v + last_speed_mps_[i]) * dt;
+    last_speed_mps_[i] = v;
+  }
+  last_tick_ns_ = truth.time_ns;
+  gear_for(truth.speed_mps);
+}
+
+void WheelModel::fill_ticks(const TruthSample& truth, WheelTicks& out) const {
+  out = WheelTicks{};
+  out.header.time_ns = truth.time_ns;
+  out.header.time_source = TimeSource::kGps;
+  out.rollover = spec_.tick_rollover;
+  out.gear = last_gear_;
+  out.is_signed = spec_.is_signed;
+}
+
+namespace {
+// The count of a rolled distance on a counter wrapping at `rollover` (0: 2^32).
+std::uint32_t count_of(double distance_m, double m_per_tick, std::uint64_t rollover) {
+  const std::int64_t n = static_cast<std::int64_t>(std::floor(distance_m / m_per_tick));
+  const std::int64_t range = rollover == 0 ? (std::int64_t{1} << 32) : static_cast<std::int64_t>(rollover);
+  return static_cast<std::uint32_t>(((n % range) + range) % range);
+}
+}  // namespace
+
+void WheelModel::make_wheel_ticks(const TruthSample& truth, WheelTicks& out) const {
+  fill_ticks(truth, out);
+  out.channels = 4;
+  out.header.valid = WheelTicks::kValidFrontLeft | WheelTicks::kValidFrontRight | WheelTicks::kValidRearLeft |
+                     WheelTicks::kValidRearRight;
+  for (std::size_t i = 0; i < 4; ++i) out.ticks[i] = count_of(distance_m_[i], spec_.m_per_tick, spec_.tick_rollover);
+}
+
+void WheelModel::make_vehicle_ticks(const TruthSample& truth, WheelTicks& out) const {
+  fill_ticks(truth, out);
+  out.channels = 1;
+  out.header.valid = WheelTicks::kValidFrontLeft;
+  out.ticks[0] = count_of(distance_m_[4], spec_.m_per_tick, spec_.tick_rollover);
 }
 
 }  // namespace navfuse::sim

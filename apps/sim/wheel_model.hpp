@@ -12,6 +12,7 @@
 // zero, like an encoder that sees no pulses.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include <Eigen/Core>
@@ -34,6 +35,14 @@ struct WheelSpec {
   double reported_std_mps = 0.0;  // speed_std_mps field; 0 = report noise_std_mps
   bool is_signed = true;          // false: magnitudes only, direction from gear
   double latency_s = 0.0;         // delivery delay (stamp stays the measurement time)
+  // Tick counters: the distance each point rolled, (1 + scale_error) times the true distance
+  // (trapezoidal over the wheel epochs), in whole counts of m_per_tick, wrapping at
+  // tick_rollover (0: 2^32). Unsigned counters count the distance either way (direction from
+  // gear); signed ones count down when reversing.
+  bool wheel_ticks = false;    // output WheelTicks, four wheels (FusionEngine WheelTickInput)
+  bool vehicle_ticks = false;  // output WheelTicks, one channel at lever_arm_m (VehicleTickInput)
+  double m_per_tick = 0.02;
+  std::uint64_t tick_rollover = 0;
 };
 
 class WheelModel {
@@ -43,12 +52,23 @@ class WheelModel {
   const WheelSpec& spec() const { return spec_; }
   std::int64_t period_ns() const { return period_ns_; }
   std::int64_t latency_ns() const { return latency_ns_; }
-  bool enabled() const { return spec_.vehicle_speed || spec_.wheel_speeds; }
+  bool enabled() const {
+    return spec_.vehicle_speed || spec_.wheel_speeds || spec_.wheel_ticks || spec_.vehicle_ticks;
+  }
 
   void make_vehicle_speed(const TruthSample& truth, VehicleSpeed& out);
   void make_wheel_speeds(const TruthSample& truth, WheelSpeeds& out);
+  // Advance the tick distances to `truth` (call once per wheel epoch, before the make_*_ticks).
+  void advance_ticks(const TruthSample& truth);
+  void make_wheel_ticks(const TruthSample& truth, WheelTicks& out) const;
+  void make_vehicle_ticks(const TruthSample& truth, WheelTicks& out) const;
 
  private:
+  // True signed speeds of the wheel contact points FL, FR, RL, RR and of the lever-arm point.
+  std::array<double, 4> true_wheel_speeds(const TruthSample& truth) const;
+  double true_point_speed(const TruthSample& truth) const;
+  void fill_ticks(const TruthSample& truth, WheelTicks& out) const;
+
   Gear gear_for(double speed_mps);
   double measure(double true_speed_mps);
 
@@ -57,6 +77,10 @@ class WheelModel {
   std::int64_t latency_ns_ = 0;
   Rng rng_;
   Gear last_gear_ = Gear::kForward;
+  // Rolled distance of FL, FR, RL, RR and of the lever-arm point, and their last speeds.
+  std::array<double, 5> distance_m_{};
+  std::array<double, 5> last_speed_mps_{};
+  std::int64_t last_tick_ns_ = INT64_MIN;
 };
 
 // True speed of the point at `lever_arm_m` along body x, and its velocity in the vehicle frame.

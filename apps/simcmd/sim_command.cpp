@@ -66,6 +66,11 @@ SimReport run_sim(const SimOptions& options) {
     throw CommandError(e.what());
   }
   if (options.seed) scenario.seed = *options.seed;
+  if (options.wheel_tick_m > 0.0) {
+    scenario.wheel.vehicle_ticks = scenario.wheel.vehicle_speed;
+    scenario.wheel.vehicle_speed = false;
+    scenario.wheel.m_per_tick = options.wheel_tick_m;
+  }
   const frontends::FrontendInfo& frontend = frontend_or_throw(options.format);
   const frontends::FrontendInfo* wheel_frontend = nullptr;
   if (!options.wheel_out_path.empty()) {
@@ -179,6 +184,9 @@ void add_sim_command(CLI::App& root, int& exit_code) {
   sub->add_option("--truth", o.truth_path, "Also write the truth as CSV");
   CLI::Option* seed = sub->add_option("--seed", args->seed, "Random seed (default: the scenario's)");
   sub->add_option("--wheel-out", o.wheel_out_path, "Write wheel/vehicle speed to this FusionEngine log instead");
+  sub->add_option("--wheel-ticks", o.wheel_tick_m,
+                  "Odometer as a vehicle tick counter of this many metres per tick instead of a speed")
+      ->check(CLI::Range(1e-6, 10.0));
   sub->add_option("--device-rate", args->device_rate_hz, "Device INS solution rate in Hz (0: none)")
       ->check(CLI::NonNegativeNumber);
   add_quiet_flag(sub, args->quiet, "report of what was written");

@@ -24,6 +24,9 @@ struct SimOptions {
   std::string wheel_out_path;
   std::optional<std::uint64_t> seed;      // default: the scenario's
   std::optional<double> device_rate_hz;   // default: the device class's; 0 = no device solution
+  // > 0: the scenario's vehicle speed becomes a vehicle tick counter of this many metres per
+  // count (WheelTicks, one channel: FusionEngine VehicleTickInput on --wheel-out).
+  double wheel_tick_m = 0.0;
 };
 
 struct SimReport {

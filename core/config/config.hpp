@@ -51,6 +51,12 @@ struct GnssConfig {
 struct WheelConfig {
   Vec3 lever_arm_m{0, 0, 0};  // speed measurement point (e.g. rear axle centre)
   double speed_std_mps = 0.05;
+  // Distance per count of a tick counter: wheel encoders (FusionEngine WheelTickInput), vehicle
+  // tick counters (VehicleTickInput) and the UM220's odometer pulses (its odometer_m_per_pulse,
+  // which the device calibrates and never reports). 0: tick counts are not fused.
+  double m_per_tick = 0.0;
+  // Prior 1-sigma of the odometer scale error (fraction; 0.02 = 2 %); 0: not estimated.
+  double initial_scale_std = 0.02;
 };
 
 // Heading initialisation. Unset (nullopt, `~` in YAML) means "the platform's default" or "none".

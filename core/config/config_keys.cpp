@@ -33,6 +33,11 @@ constexpr ValueRange kAccelBiasStdMps2{0.0, 100.0, true};
 // the vehicle can reach, or alignment never happens).
 constexpr ValueRange kSpeedMps{0.0, 100.0, true};
 constexpr ValueRange kAny{-kInf, kInf};
+// A tick is a fraction of a wheel turn: beyond 10 m per count it is a distance, not a tick
+// (or the count's unit is wrong).
+constexpr ValueRange kTickDistanceM{0.0, 10.0};
+// An odometer scale off by more than half is not an odometer the filter should calibrate.
+constexpr ValueRange kScaleStd{0.0, 0.5};
 
 const KeyBinding kKeys[] = {
     NAVFUSE_CONFIG_KEY(platform, kAny,
@@ -56,10 +61,16 @@ const KeyBinding kKeys[] = {
                        "turn-on accel bias uncertainty, 1 sigma (m/s^2)"),
     NAVFUSE_CONFIG_KEY(gnss.lever_arm_m, kLeverArmM, "primary antenna, vehicle frame FRD (m)"),
     NAVFUSE_CONFIG_KEY(gnss.secondary_lever_arm_m, kLeverArmM,
-                       "secondary antenna for dual-antenna heading, vehicle frame FRD (m)"),
+                       "secondary antenna: dual-antenna heading baseline, and where the fixes of "
+                       "receiver 2 (GNSS2, receiver_id 1) are measured; vehicle frame FRD (m)"),
     NAVFUSE_CONFIG_KEY(wheel.lever_arm_m, kLeverArmM,
                        "speed measurement point (e.g. rear axle centre), vehicle frame FRD (m)"),
     NAVFUSE_CONFIG_KEY(wheel.speed_std_mps, kPositive, "wheel speed noise, 1 sigma (m/s)"),
+    NAVFUSE_CONFIG_KEY(wheel.m_per_tick, kTickDistanceM,
+                       "distance per wheel / vehicle tick or odometer pulse (UM220 odometer_m_per_pulse) "
+                       "(m; 0: ticks not fused)"),
+    NAVFUSE_CONFIG_KEY(wheel.initial_scale_std, kScaleStd,
+                       "odometer scale error prior, 1 sigma (fraction; 0: scale not estimated)"),
     NAVFUSE_CONFIG_KEY(alignment.min_speed_mps, kSpeedMps,
                        "GNSS speed for heading from course (m/s; ~: 2, pedestrian 0.5)"),
     NAVFUSE_CONFIG_KEY(alignment.initial_heading_deg, kAngleDeg,

@@ -245,6 +245,9 @@ struct NavSolution {
   static constexpr std::uint32_t kStatusImuFault = 1u << 3;
   static constexpr std::uint32_t kStatusWheelAiding = 1u << 4;
   static constexpr std::uint32_t kStatusDualAntennaHeading = 1u << 5;
+  // The dual-antenna heading disagreed with the course over ground while moving: the configured
+  // baseline is wrong (e.g. antennas swapped); GNSS heading is no longer used.
+  static constexpr std::uint32_t kStatusHeadingOffset = 1u << 6;
 };
 
 // ---------------------------------------------------------------------------------------------

@@ -2,7 +2,9 @@
 
 #include <cmath>
 
+#include "core/rotation/rotation.hpp"
 #include "filter/alignment.hpp"
+#include "filter/control/baseline_check.hpp"
 #include "filter/measurements/gnss_heading.hpp"
 #include "filter/measurements/gnss_position.hpp"
 #include "filter/measurements/gnss_velocity.hpp"
@@ -46,7 +48,8 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
     return FuseResult::ok();
   }
 
-  const Observation obs = gnss_position_observation(c.view(shift_s), m);
+  const Observation obs = gnss_position_observation(
+      c.view(shift_s), m, antenna_of_receiver(c.x, o.gnss_secondary_lever_arm_m, m.receiver_id));
   const FuseResult r = c.apply(o, obs, c.gate_for(o, obs.rows()));
   if (r.used) {
     c.gnss.last_position_ns = now;
@@ -82,6 +85,10 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssVelocity& m,
   const Eigen::Matrix3d cov = (m.header.valid & GnssVelocity::kValidCovariance) != 0
                                   ? m.cov_ned_m2ps2
                                   : Eigen::Matrix3d(Eigen::Vector3d(0.01, 0.01, 0.04).asDiagonal());
+  const double course_std = std::sqrt(0.5 * (cov(0, 0) + cov(1, 1))) / speed;
+  // A baseline found wrong: the heading it gave is not known after all; re-align from the course
+  // below, at this epoch (the vehicle is moving fast enough, or it would not have been checked).
+  if (c.mode.heading_known && check_baseline(c, o, m, course_std)) c.mode.heading_known = false;
   if (!c.mode.heading_known) {
     // At rest the zero-velocity updates know the velocity better than GNSS, and a reset would
     // cut the velocity-tilt correlation that keeps the levelling honest.
@@ -94,7 +101,6 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssVelocity& m,
     // Kinematic alignment (MIP §6.4): a vehicle or walker moving forward points along its
     // course. The course noise is the horizontal velocity std over the speed; the yaw
     // uncertainty adds an allowance for sideslip and mounting.
-    const double course_std = std::sqrt(0.5 * (cov(0, 0) + cov(1, 1))) / speed;
     if (speed >= o.kinematic_alignment_speed_mps && course_std <= o.kinematic_max_course_std_rad) {
       set_heading(c, std::atan2(m.vel_ned_mps.y(), m.vel_ned_mps.x()),
                   std::hypot(course_std, o.kinematic_heading_std_rad));
@@ -106,7 +112,8 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssVelocity& m,
     return FuseResult::ok();
   }
 
-  Observation obs = gnss_velocity_observation(c.view(shift_s), m);
+  Observation obs = gnss_velocity_observation(
+      c.view(shift_s), m, antenna_of_receiver(c.x, o.gnss_secondary_lever_arm_m, m.receiver_id));
   obs.r = cov;
   const FuseResult r = c.apply(o, obs, c.gate_for(o, obs.rows()));
   if (r.used) {
@@ -131,7 +138,9 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssHeading& m,
                              double shift_s) {
   if ((m.header.valid & GnssHeading::kValidHeading) == 0) return FuseResult::reject(RejectReason::kInvalid);
   if (!c.mode.levelled) return FuseResult::reject(RejectReason::kNotAligned);
+  if (c.gnss.baseline.offset_detected) return FuseResult::reject(RejectReason::kBaselineMismatch);
   const Eigen::Vector3d baseline = heading_baseline_b(o.gnss_lever_arm_m, o.gnss_secondary_lever_arm_m);
+  note_antenna_yaw(c, m.header.time_ns, rot::wrap_pi(m.heading_rad - std::atan2(baseline.y(), baseline.x())));
   if (!c.mode.heading_known) {
     set_heading(c, m.heading_rad - std::atan2(baseline.y(), baseline.x()), m.heading_std_rad);
     c.gnss.last_heading_ns = m.header.time_ns;

@@ -11,6 +11,9 @@ namespace navfuse::filter {
 
 FuseResult fuse(FilterCore& core, const FilterOptions& o, const WheelSpeeds& m, double shift_s);
 FuseResult fuse(FilterCore& core, const FilterOptions& o, const VehicleSpeed& m, double shift_s);
+// Tick counts (wheel or vehicle) as the mean speed since the stream's previous count
+// (measurements/wheel_ticks.hpp) with the scale FilterOptions::wheel_m_per_tick.
+FuseResult fuse(FilterCore& core, const FilterOptions& o, const WheelTicks& m, double shift_s);
 
 // Called every IMU sample; fuses the constraint when it is due.
 void apply_nonholonomic(FilterCore& core, const FilterOptions& o);

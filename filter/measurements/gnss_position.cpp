@@ -13,13 +13,22 @@ Eigen::Vector3d default_gnss_position_std_m(GnssFixType fix) {
   }
 }
 
-PointPrediction gnss_position_prediction(const StateView& s) { return point_at(s, s.x.gnss_lever_arm_m); }
+Antenna antenna_of_receiver(const NavState& x, const Eigen::Vector3d& secondary_lever_arm_m,
+                            std::uint8_t receiver_id) {
+  if (receiver_id == 1 && !secondary_lever_arm_m.isZero()) return {secondary_lever_arm_m, false};
+  return {x.gnss_lever_arm_m, true};
+}
 
-Observation gnss_position_observation(const StateView& s, const GnssPosition& m) {
+PointPrediction gnss_position_prediction(const StateView& s, const Antenna& antenna) {
+  return point_at(s, antenna.lever_arm_m);
+}
+
+Observation gnss_position_observation(const StateView& s, const GnssPosition& m, const Antenna& antenna) {
   Observation obs(3);
-  obs.residual = point_minus_llh_ned_m(s, gnss_position_prediction(s), m.lat_rad, m.lon_rad, m.height_m);
-  point_jacobian(s, s.x.gnss_lever_arm_m, obs);
-  obs.h.block<3, 3>(0, sx::kLeverArm) = s.c_nb;
+  obs.residual =
+      point_minus_llh_ned_m(s, gnss_position_prediction(s, antenna), m.lat_rad, m.lon_rad, m.height_m);
+  point_jacobian(s, antenna.lever_arm_m, obs);
+  if (antenna.lever_arm_is_state) obs.h.block<3, 3>(0, sx::kLeverArm) = s.c_nb;
   if ((m.header.valid & GnssPosition::kValidCovariance) != 0) {
     obs.r = m.cov_ned_m2;
   } else {

@@ -9,9 +9,20 @@ namespace navfuse::filter {
 // 1-sigma position noise assumed when a fix reports no covariance (typical receiver figures).
 Eigen::Vector3d default_gnss_position_std_m(GnssFixType fix);
 
+// The antenna a receiver's fixes are measured at. Receiver 1 (MIP 0x92 "GNSS 2", VN-300 GNSS2:
+// the second antenna of a dual-antenna set-up) is at the configured secondary antenna, a fixed
+// lever arm; every other receiver, and receiver 1 while no secondary antenna is configured (zero),
+// at the primary antenna, whose lever arm is the state sx::kLeverArm.
+struct Antenna {
+  Eigen::Vector3d lever_arm_m = Eigen::Vector3d::Zero();
+  bool lever_arm_is_state = true;
+};
+Antenna antenna_of_receiver(const NavState& x, const Eigen::Vector3d& secondary_lever_arm_m,
+                            std::uint8_t receiver_id);
+
 // h(x): the antenna position.
-PointPrediction gnss_position_prediction(const StateView& s);
+PointPrediction gnss_position_prediction(const StateView& s, const Antenna& antenna);
 // Rows north, east (and down when the height is valid).
-Observation gnss_position_observation(const StateView& s, const GnssPosition& m);
+Observation gnss_position_observation(const StateView& s, const GnssPosition& m, const Antenna& antenna);
 
 }  // namespace navfuse::filter

@@ -20,8 +20,8 @@ Observation antenna_velocity_observation(const StateView& s, const Eigen::Vector
   return obs;
 }
 
-Observation gnss_velocity_observation(const StateView& s, const GnssVelocity& m) {
-  Observation obs = antenna_velocity_observation(s, s.x.gnss_lever_arm_m, m.vel_ned_mps, true);
+Observation gnss_velocity_observation(const StateView& s, const GnssVelocity& m, const Antenna& antenna) {
+  Observation obs = antenna_velocity_observation(s, antenna.lever_arm_m, m.vel_ned_mps, antenna.lever_arm_is_state);
   if ((m.header.valid & GnssVelocity::kValidCovariance) != 0) {
     obs.r = m.cov_ned_m2ps2;
   } else {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/measurements/measurements.hpp"
+#include "filter/measurements/gnss_position.hpp"
 #include "filter/measurements/state_view.hpp"
 
 namespace navfuse::filter {
@@ -24,6 +25,6 @@ Observation antenna_velocity_observation(const StateView& s, const Eigen::Vector
                                          const Eigen::Vector3d& measured_ned_mps,
                                          bool lever_arm_is_state);
 
-Observation gnss_velocity_observation(const StateView& s, const GnssVelocity& m);
+Observation gnss_velocity_observation(const StateView& s, const GnssVelocity& m, const Antenna& antenna);
 
 }  // namespace navfuse::filter

@@ -57,9 +57,12 @@ SolutionType solution_type_of(NavMode mode, GnssFixType fix) {
   switch (mode) {
     case NavMode::kInvalid:
     case NavMode::kInitializing:
+      return SolutionType::kInvalid;
     case NavMode::kVerticalGyro:
     case NavMode::kAhrs:
-      return SolutionType::kInvalid;
+      // Before the heading is known a position held at the GNSS fixes is still that fix's.
+      if (fix == GnssFixType::kNone) return SolutionType::kInvalid;
+      break;
     case NavMode::kDeadReckoning:
       return SolutionType::kIntegrate;
     case NavMode::kNavigation:

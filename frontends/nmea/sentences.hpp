@@ -130,6 +130,11 @@ struct Gst {  // L1059-L1081 (h51 only)
   std::optional<Real> std_lat_m, std_lon_m, std_alt_m;
 };
 
+struct Hdt {  // NMEA 0183 HDT (not a UM220 output)
+  Talker talker{'G', 'P'};
+  std::optional<Real> heading_deg;  // true heading, [0, 360)
+};
+
 // Decoders take the split fields of one sentence ([0] = name).
 std::optional<Gga> decode_gga(const Fields& f);
 std::optional<Gll> decode_gll(const Fields& f);
@@ -139,6 +144,7 @@ std::optional<Rmc> decode_rmc(const Fields& f);
 std::optional<Vtg> decode_vtg(const Fields& f);
 std::optional<Zda> decode_zda(const Fields& f);
 std::optional<Gst> decode_gst(const Fields& f);
+std::optional<Hdt> decode_hdt(const Fields& f);
 
 // Encoders append one complete sentence; false (nothing appended) if it cannot be written
 // (too long, non-finite value).
@@ -150,6 +156,7 @@ bool encode(const Rmc& s, std::vector<std::uint8_t>& out);
 bool encode(const Vtg& s, std::vector<std::uint8_t>& out);
 bool encode(const Zda& s, std::vector<std::uint8_t>& out);
 bool encode(const Gst& s, std::vector<std::uint8_t>& out);
+bool encode(const Hdt& s, std::vector<std::uint8_t>& out);
 
 // FrameRecord fields, in wire order, with units in the names.
 void append_fields(const Gga& s, frontends::FrameRecord& r);

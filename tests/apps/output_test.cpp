@@ -60,20 +60,31 @@ TEST(CsvPoseWriter, RowHasExactTimeAndFixedDecimals) {
   s.pos_std_ned_m = {0.5, 0.5, 1.0};
   s.vel_std_ned_mps = {0.01, 0.02, 0.03};
   s.att_std_rpy_rad = Eigen::Vector3d(0.1, 0.1, 0.5) * rot::kDegToRad;
+  s.header.valid = NavSolution::kValidPosition | NavSolution::kValidVelocity | NavSolution::kValidAttitude |
+                   NavSolution::kValidHeading | NavSolution::kValidPositionStd | NavSolution::kValidVelocityStd |
+                   NavSolution::kValidAttitudeStd;
+  // Levelled, no GNSS yet, heading unknown: only roll, pitch and the attitude stds are known.
+  NavSolution levelled = s;
+  levelled.mode = NavMode::kVerticalGyro;
+  levelled.header.valid = NavSolution::kValidAttitude | NavSolution::kValidAttitudeStd;
   {
     CsvPoseWriter w((dir / "p.csv").string());
     OutputEpoch e{.solution = s};
     w.write(e);  // not a pose epoch: no row
     e.pose_due = true;
     w.write(e);
+    e.solution = levelled;
+    w.write(e);
     w.commit();
   }
   const std::string text = read_text(dir / "p.csv");
-  const std::string row = text.substr(text.find('\n') + 1);
-  EXPECT_EQ(row,
+  const std::string rows = text.substr(text.find('\n') + 1);
+  EXPECT_EQ(rows,
             "1234567890.000000005,gps,navigation,45.0000000000,-120.5000000000,100.2500,1.00000,-2.00000,"
             "0.50000,1.000000,-2.000000,90.000000,0.5000,0.5000,1.0000,0.01000,0.02000,0.03000,0.100000,"
-            "0.100000,0.500000\n");
+            "0.100000,0.500000\n"
+            "1234567890.000000005,gps,vertical_gyro,nan,nan,nan,nan,nan,nan,1.000000,-2.000000,nan,nan,nan,nan,"
+            "nan,nan,nan,0.100000,0.100000,0.500000\n");
 }
 
 TEST(CompensatedImu, SpecificForceIsAccelerationMinusGravityInBody) {

@@ -135,11 +135,13 @@ TEST(Engine, UnusableKindsAreCountedAsIgnored) {
   e.process(Magnetometer{});
   e.process(Pressure{});
   e.process(NavSolution{});
+  // Wheel ticks are fused (issue 17): one with no valid counter is rejected, not ignored.
   e.process(WheelTicks{});
   EXPECT_EQ(e.stats().of(MeasurementKind::kMagnetometer).ignored, 1u);
   EXPECT_EQ(e.stats().of(MeasurementKind::kPressure).ignored, 1u);
   EXPECT_EQ(e.stats().of(MeasurementKind::kDeviceSolution).ignored, 1u);
-  EXPECT_EQ(e.stats().of(MeasurementKind::kWheelTicks).ignored, 1u);
+  EXPECT_EQ(e.stats().of(MeasurementKind::kWheelTicks).ignored, 0u);
+  EXPECT_EQ(e.stats().of(MeasurementKind::kWheelTicks).rejected_for(RejectReason::kInvalid), 1u);
 }
 
 // Delivers every non-IMU measurement `delay_samples` IMU samples after its stamp.

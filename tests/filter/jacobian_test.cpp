@@ -32,6 +32,7 @@
 #include "filter/measurements/gnss_velocity.hpp"
 #include "filter/measurements/nonholonomic.hpp"
 #include "filter/measurements/wheel_speed.hpp"
+#include "filter/measurements/wheel_ticks.hpp"
 #include "filter/measurements/zero_velocity.hpp"
 #include "filter/nav_state.hpp"
 #include "filter/process_model.hpp"
@@ -171,7 +172,11 @@ std::vector<Model> models(const TestPoint& p) {
   gh.header.valid = GnssHeading::kValidHeading;
   gh.heading_rad = 0.4;
   gh.heading_std_rad = 0.01;
-  const Eigen::Vector3d baseline = heading_baseline_b({0.8, -0.4, -1.3}, {-0.6, 0.5, -1.2});
+  const Eigen::Vector3d secondary_lever(-0.6, 0.5, -1.2);
+  const Eigen::Vector3d baseline = heading_baseline_b({0.8, -0.4, -1.3}, secondary_lever);
+  // Receiver 0 at the primary antenna (its lever arm a state), receiver 1 at the secondary.
+  const auto primary = [=](const StateView& s) { return antenna_of_receiver(s.x, secondary_lever, 0); };
+  const auto secondary = [=](const StateView& s) { return antenna_of_receiver(s.x, secondary_lever, 1); };
 
   ExternalPosition ep_llh;
   ep_llh.header.valid = 0b111u;
@@ -212,9 +217,14 @@ std::vector<Model> models(const TestPoint& p) {
   }
 
   return {
-      {"gnss_position", [=](const StateView& s) { return gnss_position_observation(s, gp); },
+      {"gnss_position", [=](const StateView& s) { return gnss_position_observation(s, gp, primary(s)); },
        list(kPointNeglected)},
-      {"gnss_velocity", [=](const StateView& s) { return gnss_velocity_observation(s, gv); },
+      {"gnss_position_secondary_receiver",
+       [=](const StateView& s) { return gnss_position_observation(s, gp, secondary(s)); }, list(kPointNeglected)},
+      {"gnss_velocity", [=](const StateView& s) { return gnss_velocity_observation(s, gv, primary(s)); },
+       list(kAntennaVelocityNeglected)},
+      {"gnss_velocity_secondary_receiver",
+       [=](const StateView& s) { return gnss_velocity_observation(s, gv, secondary(s)); },
        list(kAntennaVelocityNeglected)},
       {"gnss_heading", [=](const StateView& s) { return gnss_heading_observation(s, gh, baseline); }, {}, true},
       {"external_position_llh", [=](const StateView& s) { return external_position_observation(s, ep_llh); },
@@ -229,6 +239,9 @@ std::vector<Model> models(const TestPoint& p) {
        body_velocity},
       {"external_heading", [=](const StateView& s) { return external_heading_observation(s, eh); }, {}, true},
       {"wheel_speed", [=](const StateView& s) { return wheel_speed_observation(s, speed, wheel_lever); },
+       speed_terms},
+      {"wheel_ticks",
+       [=](const StateView& s) { return wheel_tick_observation(s, TickSpeed{speed, 0.1}, wheel_lever, 1.5); },
        speed_terms},
       {"nonholonomic", [=](const StateView& s) { return nonholonomic_observation(s, wheel_lever, 0.1, 0.1); },
        nhc_terms},

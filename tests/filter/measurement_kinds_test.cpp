@@ -27,15 +27,16 @@ constexpr MeasurementKindTable fused_without_check() {
 static_assert(!covers_every_kind(fused_without_check()), "a fused kind needs its input check");
 
 TEST(MeasurementKinds, FusedKindsAreTheOnesTheFilterHasModelsFor) {
-  // DESIGN.md: device solutions are for comparison; the filter has no magnetometer, baro or
-  // tick-count model (issue 13: wheel ticks are "not fused" until it has one).
-  for (MeasurementKind k : {MeasurementKind::kWheelTicks, MeasurementKind::kDeviceSolution,
+  // DESIGN.md: device solutions are for comparison; the filter has no magnetometer or baro
+  // model. Wheel ticks are fused since issue 17 (measurements/wheel_ticks.hpp).
+  for (MeasurementKind k : {MeasurementKind::kDeviceSolution,
                             MeasurementKind::kMagnetometer, MeasurementKind::kPressure, MeasurementKind::kCount}) {
     EXPECT_FALSE(is_fused(k)) << to_string(k);
   }
   for (MeasurementKind k : {MeasurementKind::kImu, MeasurementKind::kGnssPosition, MeasurementKind::kGnssVelocity,
                             MeasurementKind::kGnssHeading, MeasurementKind::kWheelSpeed,
-                            MeasurementKind::kVehicleSpeed, MeasurementKind::kExternalPosition,
+                            MeasurementKind::kVehicleSpeed, MeasurementKind::kWheelTicks,
+                            MeasurementKind::kExternalPosition,
                             MeasurementKind::kExternalVelocity, MeasurementKind::kExternalHeading}) {
     EXPECT_TRUE(is_fused(k)) << to_string(k);
   }
@@ -44,14 +45,12 @@ TEST(MeasurementKinds, FusedKindsAreTheOnesTheFilterHasModelsFor) {
 
 TEST(MeasurementKinds, EngineCountsUnfusedKindsAsIgnoredAndChecksFusedOnes) {
   Engine engine{FilterOptions{}};
-  engine.process(Measurement{WheelTicks{}});
   engine.process(Measurement{Pressure{}});
   GnssVelocity bad;
   bad.header.valid = GnssVelocity::kValidVelocity;
   bad.vel_ned_mps.x() = std::nan("");
   engine.process(Measurement{bad});
   const FilterStats& st = engine.stats();
-  EXPECT_EQ(st.of(MeasurementKind::kWheelTicks).ignored, 1u);
   EXPECT_EQ(st.of(MeasurementKind::kPressure).ignored, 1u);
   EXPECT_EQ(st.of(MeasurementKind::kGnssVelocity).ignored, 0u);
   EXPECT_EQ(st.of(MeasurementKind::kGnssVelocity).rejected[static_cast<std::size_t>(RejectReason::kNan)], 1u);

@@ -90,13 +90,13 @@ TEST(FusionRunner, KindsTheFilterDoesNotFuseAreIgnoredWhateverTheirClock) {
   Recorder rec;
   FusionRunner runner(filter::FilterOptions{}, options(0.0), rec);
   runner.offer(still_imu(kStartNs));
-  WheelTicks ticks;  // not fused (filter/measurement_kinds.hpp), on another device's clock
-  ticks.header = {kStartNs, TimeSource::kDeviceMonotonic, 1, 0};
-  runner.offer(ticks);
+  Pressure baro;  // not fused (filter/measurement_kinds.hpp), on another device's clock
+  baro.header = {kStartNs, TimeSource::kDeviceMonotonic, 1, Pressure::kValidPressure};
+  runner.offer(baro);
   Summary s;
   runner.fill_summary(s, 1.0);
-  EXPECT_EQ(rejected(s, MeasurementKind::kWheelTicks, "time_base"), 0u) << "the gate and the filter share one list";
-  EXPECT_EQ(rejected(s, MeasurementKind::kWheelTicks, "ignored"), 1u);
+  EXPECT_EQ(rejected(s, MeasurementKind::kPressure, "time_base"), 0u) << "the gate and the filter share one list";
+  EXPECT_EQ(rejected(s, MeasurementKind::kPressure, "ignored"), 1u);
 }
 
 TEST(FusionRunner, RejectedImuSampleIsNoEpoch) {
