@@ -111,6 +111,14 @@ std::vector<Interval> backward_pass(ForwardRecorder& rec, SmootherStats& stats, 
         continue;
       case RecordType::kIntervalStart:
         if (!rec.read(i, start)) return out;
+        if (!start.navigating) {
+          // Before position and heading are known the prior is not a distribution around the
+          // truth (heading relative, position not placed, P ~ 1e6 m^2): not smoothed, and the
+          // first navigating node starts a segment of its own.
+          have = Have::kNothing;
+          segment_open = false;
+          continue;
+        }
         if (have == Have::kPrior) {
           if (rts_gain(start, prior, gain)) {
             const int n = prior.n;

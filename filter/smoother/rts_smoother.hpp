@@ -18,8 +18,10 @@
 // by Phi over at most one covariance step (<= 50 ms), a first-order change.
 //
 // Restarts and breaks (forward_record.hpp) end a segment: each is smoothed on its own, and its
-// last node keeps the filtered state. IMU samples outside any smoothed interval (before the first
-// covariance step, after the last) are not reported.
+// last node keeps the filtered state. Only intervals that start navigating (levelled, heading and
+// position known) are smoothed: before that the filter's prior is no distribution around the
+// truth (relative heading, unplaced position). IMU samples outside any smoothed interval (before
+// navigation, after the last node) are not reported.
 //
 // Memory: the backward pass keeps, per interval, the two corrections and the covariance blocks
 // the outputs use (~0.9 kB); the record itself stays on disk.
