@@ -1,6 +1,7 @@
 #include "filter/smoother/rts_smoother.hpp"
 
 #include <algorithm>
+#include <deque>
 #include <vector>
 
 #include <Eigen/Cholesky>
@@ -67,8 +68,9 @@ bool rts_gain(const ForwardRecordEntry& start, const ForwardRecordEntry& prior, 
   return true;
 }
 
-// The backward pass: smoothed corrections per interval, in time order.
-std::vector<Interval> backward_pass(ForwardRecorder& rec, SmootherStats& stats, const std::function<void(double)>& progress) {
+// The backward pass: smoothed corrections per interval, in time order (a deque, filled from the
+// front: no reallocation doubling the peak memory of a long log).
+std::deque<Interval> backward_pass(ForwardRecorder& rec, SmootherStats& stats, const std::function<void(double)>& progress) {
   enum class Have { kNothing, kSmoothed, kPrior };
   Have have = Have::kNothing;
   NavState xs;                          // smoothed state at the newest node seen
@@ -77,7 +79,7 @@ std::vector<Interval> backward_pass(ForwardRecorder& rec, SmootherStats& stats, 
   std::size_t prior_record = 0;
   StateVector e_end = StateVector::Zero();
   Covariance ps_end = Covariance::Zero();
-  std::vector<Interval> out;
+  std::deque<Interval> out;
   bool segment_open = false;
   Eigen::MatrixXd gain;
   const std::size_t total = rec.size();
@@ -136,7 +138,7 @@ std::vector<Interval> backward_pass(ForwardRecorder& rec, SmootherStats& stats, 
             ps = (0.5 * (ps + ps.transpose())).eval();
             iv.p_start = Blocks::of(ps);
             iv.p_end = Blocks::of(ps_end);
-            out.push_back(iv);
+            out.push_front(iv);
             ++stats.intervals;
             if (!segment_open) ++stats.segments;
             segment_open = true;
@@ -153,7 +155,6 @@ std::vector<Interval> backward_pass(ForwardRecorder& rec, SmootherStats& stats, 
         continue;
     }
   }
-  std::reverse(out.begin(), out.end());
   return out;
 }
 
@@ -162,7 +163,7 @@ std::vector<Interval> backward_pass(ForwardRecorder& rec, SmootherStats& stats, 
 SmootherStats smooth(ForwardRecorder& rec, const std::function<void(const SmoothedSample&)>& on_sample,
                      const std::function<void(double)>& progress) {
   SmootherStats stats;
-  const std::vector<Interval> intervals = backward_pass(rec, stats, progress);
+  const std::deque<Interval> intervals = backward_pass(rec, stats, progress);
   if (!rec.error().empty()) {
     stats.error = rec.error();
     return stats;
