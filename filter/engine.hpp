@@ -79,6 +79,10 @@ class Engine {
   void set_wheel_lever_arm(const Eigen::Vector3d& lever_arm_m);
   std::vector<NavMode> modes_reached() const;
 
+  // Records the forward pass for the smoother from now on (filter/smoother/forward_record.hpp);
+  // nullptr stops. The recorder must outlive the recording.
+  void record_to(ForwardRecorder* recorder) { core_.record.sink = recorder; }
+
   // Internals for tests and tools: full covariance and nominal state.
   const FilterCore& core() const { return core_; }
 

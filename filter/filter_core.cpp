@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "filter/alignment.hpp"
 #include "filter/control/odometry_control.hpp"
 #include "filter/control/stationary_control.hpp"
 #include "filter/measurement_kinds.hpp"
 #include "filter/mode_machine.hpp"
+#include "filter/smoother/forward_record.hpp"
 
 namespace navfuse::filter {
 namespace {
@@ -35,6 +37,7 @@ StateVector variance_floor_for(const FilterOptions& o) {
 }  // namespace
 
 void FilterCore::restart(const FilterOptions& o) {
+  if (record.sink != nullptr) record_restart(*this);
   const std::int64_t t = x.time_ns;
   x = NavState{};
   x.time_ns = t;
@@ -84,8 +87,10 @@ bool FilterCore::propagate(const FilterOptions& o, const ImuIncrement& raw) {
     earth_cell = x.time_ns / grid_ns;
   }
   const std::int64_t previous_ns = x.time_ns;
+  if (record.sink != nullptr) record_step_start(*this);
   strapdown_step(x, memory, comp, earth);
   step.add(comp);
+  if (record.sink != nullptr) record_imu(*this, o);
   if (x.time_ns / grid_ns != previous_ns / grid_ns || step.dt_s >= o.covariance_interval_s - 1e-9) {
     flush_covariance(o);
   }
@@ -102,12 +107,13 @@ void FilterCore::apply_constraints(const FilterOptions& o, const ImuIncrement& r
 void FilterCore::flush_covariance(const FilterOptions& /*o*/) {
   if (step.dt_s <= 0.0) return;
   propagate_covariance(ekf.p, ekf.n, x, earth, step, noise_density);
-  step = ProcessAccumulator{};
   // Vertical-gyro mode (MIP §6.2): the heading is relative, not estimated. Estimating it through
   // the earth-rate coupling from a heading error of tens of degrees would be far outside the
   // linearisation and drags roll and pitch with it.
   if (mode.levelled && !mode.heading_known) ekf.reset_states(sx::kAttDown, 1, 0.0);
   ekf.guard(variance_floor);
+  if (record.sink != nullptr) record_propagation(*this);  // reads `step`: before it is cleared
+  step = ProcessAccumulator{};
 }
 
 FuseResult FilterCore::apply(const FilterOptions& o, const Observation& obs, double gate) {
@@ -116,8 +122,11 @@ FuseResult FilterCore::apply(const FilterOptions& o, const Observation& obs, dou
   const UpdateResult r = ekf.update(obs, gate);
   if (r.singular) return FuseResult::reject(RejectReason::kNumerical);
   if (!r.accepted) return FuseResult::reject(RejectReason::kChi2Gate);
+  std::optional<NavState> before;
+  if (record.sink != nullptr) before = x;
   inject_error(x, r.dx);
   ekf.guard(variance_floor);
+  if (before) record_update(*this, *before, obs, r);
   return FuseResult::ok();
 }
 

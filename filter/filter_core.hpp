@@ -16,6 +16,7 @@
 #include "filter/measurements/state_view.hpp"
 #include "filter/nav_state.hpp"
 #include "filter/process_model.hpp"
+#include "filter/smoother/record_hook.hpp"
 #include "filter/strapdown.hpp"
 
 namespace navfuse::filter {
@@ -131,6 +132,7 @@ struct FilterCore {
   GnssControlState gnss;
   OdometryState odometry;
   ModeState mode;
+  RecordHook record;  // forward-pass recording for the smoother; kept across restart()
 
   // Back to Init with the configured priors (keeps modes reached and stats elsewhere).
   void restart(const FilterOptions& o);

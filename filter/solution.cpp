@@ -27,28 +27,9 @@ Eigen::Matrix3d euler_from_phi(const Eigen::Vector3d& rpy) {
 
 }  // namespace
 
-void fill_nav_solution(const FilterCore& c, const FilterOptions& o, TimeSource time_source,
-                       NavSolution& out) {
-  const NavState& x = c.x;
-  const Covariance& p = c.ekf.p;
-  const ModeState& mode = c.mode;
-  out = NavSolution{};
-  out.header.time_ns = x.time_ns;
-  out.header.time_source = time_source;
-  out.mode = mode.mode;
-  const bool navigating = mode.mode == NavMode::kNavigation || mode.mode == NavMode::kDeadReckoning;
-  // Before the heading is known (vertical gyro) the filter already holds the position of the GNSS
-  // fixes (placed at each, place_at_fix) and, moving, their velocity (reset to each) or, at rest,
-  // the zero velocity of the ZUPTs: a device reports them then, with the heading marked invalid.
-  const bool gnss_current = seconds_since(x.time_ns, c.gnss.last_position_ns) <= o.gnss_timeout_s;
-  const bool position_known = navigating || (mode.levelled && mode.position_known && gnss_current);
-  const bool velocity_known =
-      navigating || (position_known && (c.stationary.stationary ||
-                                        seconds_since(x.time_ns, c.gnss.last_velocity_ns) <= o.gnss_timeout_s));
-  if ((mode.mode == NavMode::kNavigation || (!navigating && position_known)) && gnss_current) {
-    out.gnss_fix = c.gnss.last_fix;
-  }
-
+void fill_state_fields(const NavState& x, const Covariance& p, const Eigen::Vector3d& rate_b_rps,
+                       const Eigen::Vector3d& force_b_mps2, const Eigen::Vector3d& gravity_ned_mps2,
+                       const FilterOptions& o, NavSolution& out) {
   out.lat_rad = x.lat_rad;
   out.lon_rad = x.lon_rad;
   out.height_m = x.height_m;
@@ -67,9 +48,6 @@ void fill_nav_solution(const FilterCore& c, const FilterOptions& o, TimeSource t
   const Eigen::Matrix3d m = euler_from_phi(out.rpy_rad);
   out.att_std_rpy_rad =
       (m * p.block<3, 3>(sx::kAtt, sx::kAtt) * m.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
-  // Until the heading is known its error state is held at zero (relative heading, not
-  // estimated): the covariance says nothing of it, so report the std of no knowledge at all.
-  if (!mode.heading_known) out.att_std_rpy_rad.z() = kUnknownHeadingStd_rad;
 
   // Biases are estimated in the vehicle frame and reported in the sensor frame (MIP convention).
   const Eigen::Matrix3d c_sv = rot::dcm_from_rpy(o.mounting_rpy_rad).transpose();
@@ -80,9 +58,36 @@ void fill_nav_solution(const FilterCore& c, const FilterOptions& o, TimeSource t
   out.accel_bias_std_mps2 =
       (c_sv * p.block<3, 3>(sx::kAccelBias, sx::kAccelBias) * c_sv.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
 
-  out.gravity_ned_mps2 = c.earth.gravity_ned_mps2;
-  out.angular_rate_rps = c.rate_b_rps;
-  out.linear_accel_mps2 = c.force_b_mps2 + c_nb.transpose() * c.earth.gravity_ned_mps2;
+  out.gravity_ned_mps2 = gravity_ned_mps2;
+  out.angular_rate_rps = rate_b_rps;
+  out.linear_accel_mps2 = force_b_mps2 + c_nb.transpose() * gravity_ned_mps2;
+}
+
+void fill_nav_solution(const FilterCore& c, const FilterOptions& o, TimeSource time_source,
+                       NavSolution& out) {
+  const NavState& x = c.x;
+  const ModeState& mode = c.mode;
+  out = NavSolution{};
+  out.header.time_ns = x.time_ns;
+  out.header.time_source = time_source;
+  out.mode = mode.mode;
+  const bool navigating = mode.mode == NavMode::kNavigation || mode.mode == NavMode::kDeadReckoning;
+  // Before the heading is known (vertical gyro) the filter already holds the position of the GNSS
+  // fixes (placed at each, place_at_fix) and, moving, their velocity (reset to each) or, at rest,
+  // the zero velocity of the ZUPTs: a device reports them then, with the heading marked invalid.
+  const bool gnss_current = seconds_since(x.time_ns, c.gnss.last_position_ns) <= o.gnss_timeout_s;
+  const bool position_known = navigating || (mode.levelled && mode.position_known && gnss_current);
+  const bool velocity_known =
+      navigating || (position_known && (c.stationary.stationary ||
+                                        seconds_since(x.time_ns, c.gnss.last_velocity_ns) <= o.gnss_timeout_s));
+  if ((mode.mode == NavMode::kNavigation || (!navigating && position_known)) && gnss_current) {
+    out.gnss_fix = c.gnss.last_fix;
+  }
+
+  fill_state_fields(x, c.ekf.p, c.rate_b_rps, c.force_b_mps2, c.earth.gravity_ned_mps2, o, out);
+  // Until the heading is known its error state is held at zero (relative heading, not
+  // estimated): the covariance says nothing of it, so report the std of no knowledge at all.
+  if (!mode.heading_known) out.att_std_rpy_rad.z() = kUnknownHeadingStd_rad;
 
   if (mode.levelled) {
     out.header.valid |= NavSolution::kValidAttitude | NavSolution::kValidAttitudeStd | NavSolution::kValidBiases;

@@ -42,12 +42,18 @@ BenchResult run_bench(const BenchOptions& options) {
   if (ec || !std::filesystem::is_directory(options.report_dir)) {
     throw CommandError("cannot create report folder '" + options.report_dir + "'");
   }
+  if (!options.reference.empty() && options.reference != "smoothed") {
+    throw CommandError("--reference: '" + options.reference + "' is not a reference bench knows (smoothed)");
+  }
+  const bool smoothed = options.reference == "smoothed";
   const BenchLog log = collect_bench_log({.inputs = options.inputs,
                                           .gps_week = options.gps_week,
                                           .config_path = options.config_path,
                                           .allow_truncated = options.allow_truncated,
-                                          .progress = options.progress});
-  const AnalysisOptions analysis_options{.truth_path = options.truth_path, .max_gap_s = options.max_gap_s};
+                                          .progress = options.progress,
+                                          .smooth = smoothed});
+  const AnalysisOptions analysis_options{
+      .truth_path = options.truth_path, .max_gap_s = options.max_gap_s, .smoothed_reference = smoothed};
   const BenchAnalysis analysis = analyse(log, analysis_options);
   const nlohmann::ordered_json metrics = analysis.metrics_json(log, analysis_options);
   write_json_file(options.report_dir + "/metrics.json", metrics);

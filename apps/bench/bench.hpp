@@ -28,6 +28,7 @@ struct BenchOptions {
   bool allow_truncated = false;
   bool html = true;       // false: metrics.json and CSVs only (no Python needed)
   bool progress = false;  // progress of long logs on stderr
+  std::string reference;  // --reference smoothed: also compare both with navfuse's smoothed run
 };
 
 struct BenchResult {

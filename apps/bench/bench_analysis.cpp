@@ -82,6 +82,26 @@ const PairComparison* BenchAnalysis::pair(std::string_view name) const {
   return nullptr;
 }
 
+// navfuse's forward poses and the device against the smoothed run, as against the device: the
+// reference interpolated to the compared solution's times (the poses share the smoothed times).
+void compare_with_smoothed(const BenchLog& log, const AnalysisOptions& options, const View& navfuse, const View& device,
+                           BenchAnalysis& a) {
+  const View smoothed = log.smoothed.with(Quantity::kPosition, /*navigating_only=*/true);
+  if (smoothed.empty()) throw CommandError("empty overlap: the smoother produced no navigation solution to compare with");
+  const TrackInterpolator track(smoothed, gap_limit_ns(smoothed, options));
+  const PairSpec navfuse_spec{.name = "navfuse_vs_smoothed", .estimate = "navfuse", .reference = "smoothed",
+                              .reference_is_truth = true, .sampled_is_estimate = true};
+  a.pairs.push_back(compare_pair(navfuse_spec, navfuse, interpolating_lookup(track), a.phases));
+  require_overlap(a.pairs.back(), "the smoothed solution (" + span_text(smoothed, log.start_ns) +
+                                      ") never overlaps navfuse's navigation solution");
+  if (log.device.empty()) return;
+  const PairSpec device_spec{.name = "device_vs_smoothed", .estimate = "device", .reference = "smoothed",
+                             .reference_is_truth = true, .sampled_is_estimate = true};
+  a.pairs.push_back(compare_pair(device_spec, device, interpolating_lookup(track), a.phases));
+  require_overlap(a.pairs.back(), "the smoothed solution (" + span_text(smoothed, log.start_ns) +
+                                      ") never overlaps the device solution (" + span_text(device, log.start_ns) + ")");
+}
+
 BenchAnalysis analyse(const BenchLog& log, const AnalysisOptions& options) {
   const bool with_truth = !options.truth_path.empty();
   if (with_truth && log.time_source != TimeSource::kGps) {
@@ -149,6 +169,7 @@ BenchAnalysis analyse(const BenchLog& log, const AnalysisOptions& options) {
     require_overlap(a.pairs.back(), "the truth file '" + options.truth_path + "' covers none of navfuse's navigation (" +
                                         span_text(navfuse, log.start_ns) + ")");
   }
+  if (options.smoothed_reference) compare_with_smoothed(log, options, navfuse, device, a);
   if (with_truth && with_device) {
     TruthReference truth(options.truth_path);
     const PairSpec spec{.name = "device_vs_truth", .estimate = "device", .reference = "truth",

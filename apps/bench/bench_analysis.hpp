@@ -21,6 +21,9 @@ namespace navfuse::apps::bench {
 struct AnalysisOptions {
   std::string truth_path;            // empty: no truth
   std::optional<double> max_gap_s;   // interpolation gap limit; default: 3 median intervals
+  // --reference smoothed: navfuse and the device also against BenchLog::smoothed
+  // (navfuse_vs_smoothed, device_vs_smoothed), the best reference a log without truth has.
+  bool smoothed_reference = false;
 };
 
 struct BenchAnalysis {

@@ -22,6 +22,9 @@ void add_bench_command(CLI::App& root, int& exit_code) {
   add_gps_week_option(cmd, args->options.gps_week);
   cmd->add_option("--config", args->options.config_path, "YAML configuration (default: the device's profile)");
   cmd->add_option("--truth", args->options.truth_path, "truth CSV (navfuse sim --truth) to compare both with");
+  cmd->add_option("--reference", args->options.reference,
+                  "smoothed: also compare navfuse's forward filter and the device with navfuse's smoothed (RTS) "
+                  "solution of the same log, the best reference a log without truth has");
   cmd->add_option("--report", args->options.report_dir, "folder for report.html, metrics.json and CSVs")->required();
   cmd->add_option("--fail-above", args->fail_above,
                   "METRIC=VALUE: exit 3 when a metrics.json value exceeds VALUE (repeatable), e.g. "

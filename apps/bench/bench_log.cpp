@@ -1,6 +1,8 @@
 #include "apps/bench/bench_log.hpp"
 
 #include <algorithm>
+#include <memory>
+#include <stdexcept>
 
 #include "apps/common/command_error.hpp"
 #include "apps/common/input_spec.hpp"
@@ -8,7 +10,10 @@
 #include "apps/fusion/log_fusion.hpp"
 #include "apps/fusion/measurement_merger.hpp"
 #include "apps/replay/replay.hpp"
+#include "apps/output/output_rate.hpp"
 #include "filter/engine.hpp"
+#include "filter/smoother/forward_record.hpp"
+#include "filter/smoother/rts_smoother.hpp"
 
 namespace navfuse::apps::bench {
 namespace {
@@ -61,6 +66,18 @@ class BenchObserver final : public FusionObserver {
   const std::vector<InputSpec>& specs_;
 };
 
+// The recorded run smoothed, at the same pose times as navfuse's forward poses (OutputRate).
+void smooth_into(filter::ForwardRecorder& record, const FusionRunner& runner, const filter::FilterOptions& o,
+                 double rate_hz, SolutionTrack& out) {
+  record.close(runner.engine().core());
+  const TimeSource time_source = runner.first_imu() ? runner.first_imu()->time_source : TimeSource::kUnknown;
+  OutputRate rate(rate_hz);
+  const filter::SmootherStats stats = filter::smooth(record, [&](const filter::SmoothedSample& s) {
+    if (rate.due(s.x.time_ns)) out.append(track_sample_from(filter::smoothed_solution(s, o, time_source)));
+  });
+  if (!stats.error.empty()) throw CommandError("smoothing failed: " + stats.error);
+}
+
 }  // namespace
 
 BenchLog collect_bench_log(const BenchLogOptions& options) {
@@ -73,12 +90,23 @@ BenchLog collect_bench_log(const BenchLogOptions& options) {
   log.output_rate_hz = config.output.rate_hz;
   log.antenna_lever_arm_m = Eigen::Vector3d(config.gnss.lever_arm_m.data());
   BenchObserver observer(log, specs);
-  FusionRunner runner(filter::options_from_config(config),
+  const filter::FilterOptions filter_options = filter::options_from_config(config);
+  FusionRunner runner(filter_options,
                       {.output_rate_hz = config.output.rate_hz, .solutions = FusionRunner::Solutions::kPoses, .gnss_outages = {}},
                       observer);
+  std::unique_ptr<filter::ForwardRecorder> record;
+  if (options.smooth) {
+    try {
+      record = std::make_unique<filter::ForwardRecorder>();
+    } catch (const std::runtime_error& e) {
+      throw CommandError(e.what());
+    }
+    runner.engine().record_to(record.get());
+  }
   log.summary = fuse_log(
       merger, runner, observer,
       {.progress_bar = options.progress, .progress_lines_label = options.progress ? "navfuse bench" : nullptr});
+  if (record) smooth_into(*record, runner, filter_options, config.output.rate_hz, log.smoothed);
   const std::optional<MeasurementHeader>& imu_header = runner.first_imu();
   const std::optional<MeasurementHeader>& device_header = observer.device_header;
   if (imu_header) {

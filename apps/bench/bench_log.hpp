@@ -25,11 +25,13 @@ struct BenchLogOptions {
   std::string config_path;          // empty: the device profile of the first input
   bool allow_truncated = false;
   bool progress = false;  // report progress of long logs on stderr
+  bool smooth = false;    // --reference smoothed: record the run and smooth it (BenchLog::smoothed)
 };
 
 struct BenchLog {
   SolutionTrack navfuse;  // navfuse's poses at output.rate_hz, every mode
   SolutionTrack device;   // the device's own solutions, every mode
+  SolutionTrack smoothed;  // --reference smoothed: navfuse's run smoothed (RTS), at the pose times
   std::optional<std::size_t> device_input;  // index into `inputs` of the device's stream
   std::string device_format;                // "vn", "mip", "unicore", "fe"
   std::uint64_t other_device_solutions = 0;  // from a second input, not compared

@@ -33,7 +33,7 @@ class PhasedMetrics {
   nlohmann::ordered_json by_mode_json() const;
 
  private:
-  static constexpr std::size_t kModeCount = static_cast<std::size_t>(NavMode::kDeadReckoning) + 1;
+  static constexpr std::size_t kModeCount = static_cast<std::size_t>(NavMode::kSmoothed) + 1;
   MetricSet all_;
   std::array<MetricSet, kPhaseCount> phases_;
   std::array<MetricSet, kModeCount> modes_;

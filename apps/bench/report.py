@@ -244,7 +244,8 @@ img { max-width: 100%; display: block; margin: 0.5em 0 1.5em; }
 def main(folder):
     with open(os.path.join(folder, "metrics.json")) as f:
         metrics = json.load(f)
-    pairs = [k for k in ("navfuse_vs_device", "navfuse_vs_truth", "device_vs_truth") if k in metrics]
+    pairs = [k for k in ("navfuse_vs_device", "navfuse_vs_truth", "device_vs_truth", "navfuse_vs_smoothed",
+                         "device_vs_smoothed") if k in metrics]
     phases = load_phases(os.path.join(folder, "phases.csv"))
     tracks = {}
     for name in ("navfuse", "device", "truth"):

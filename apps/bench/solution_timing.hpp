@@ -21,7 +21,7 @@ struct SolutionTiming {
   std::optional<double> to_navigation_s;  // first full navigation solution with a position
   // Seconds in each mode: each sample's mode holds until the next sample (the last sample has no
   // successor and adds nothing).
-  std::array<double, static_cast<std::size_t>(NavMode::kDeadReckoning) + 1> mode_s{};
+  std::array<double, static_cast<std::size_t>(NavMode::kSmoothed) + 1> mode_s{};
 
   // {"time_to_attitude_s", "time_to_heading_s", "time_to_navigation_s" (null when never),
   //  "mode_s": {"navigation": s, ...} (modes that occurred)}

@@ -50,7 +50,9 @@ bool has_std(const TrackSample& s, Quantity q);
 
 // A full navigation solution (position, velocity and attitude all estimated): the modes in which
 // navfuse's poses are judged, the same set `navfuse replay --truth` uses.
-inline bool is_navigating(NavMode m) { return m == NavMode::kNavigation || m == NavMode::kDeadReckoning; }
+inline bool is_navigating(NavMode m) {
+  return m == NavMode::kNavigation || m == NavMode::kDeadReckoning || m == NavMode::kSmoothed;
+}
 
 // Samples in strictly increasing time order, which interpolation needs. A partial solution with
 // the same time as the last sample is merged into it (UM220 NAVPOS, NAVVEL and NAVATT of one

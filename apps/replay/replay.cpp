@@ -18,8 +18,10 @@
 #include "apps/fusion/fusion_runner.hpp"
 #include "apps/fusion/log_fusion.hpp"
 #include "apps/fusion/measurement_merger.hpp"
+#include "apps/replay/smoothed_pass.hpp"
 #include "apps/replay/truth_accuracy.hpp"
 #include "filter/engine.hpp"
+#include "filter/smoother/forward_record.hpp"
 
 namespace navfuse::apps {
 namespace {
@@ -93,6 +95,45 @@ std::string replay_failure(const Summary& summary, std::uint64_t imu_fused, cons
   return "";
 }
 
+// The accuracy table into the summary under `key`; returns it printed.
+std::string report_accuracy(const TruthAccuracy& accuracy, const std::string& truth, const char* key, Summary& summary) {
+  nlohmann::ordered_json a = accuracy.to_json();
+  a["truth"] = truth;
+  summary.extra[key] = a;
+  std::ostringstream text;
+  accuracy.print(text);
+  return text.str();
+}
+
+// `smooth`: the recorded forward pass smoothed into the outputs and the truth comparison; what the
+// smoother did goes into the summary.
+void smooth_record(filter::ForwardRecorder& record, const FusionRunner& runner, const filter::FilterOptions& o,
+                   double rate_hz, const std::optional<GnssOutagePlan>& outages, PoseOutputs& outputs,
+                   TruthAccuracy* accuracy, ReplayResult& result) {
+  record.close(runner.engine().core());
+  const TimeSource time_source = runner.first_imu() ? runner.first_imu()->time_source : TimeSource::kUnknown;
+  if (accuracy != nullptr && outages && runner.first_imu()) accuracy->use_outage_plan(*outages, runner.first_imu()->time_ns);
+  const SmoothedPassResult pass = write_smoothed(record, o, time_source, rate_hz, outputs, accuracy);
+  const filter::SmootherStats& s = pass.stats;
+  result.summary.extra["smoother"] = {{"record_mb", static_cast<double>(record.bytes()) / 1e6},
+                                      {"records_replaced", record.replaced()},
+                                      {"intervals", s.intervals},
+                                      {"segments", s.segments},
+                                      {"singular_intervals", s.singular},
+                                      {"imu_samples", s.imu_samples},
+                                      {"smoothed_samples", s.smoothed_samples},
+                                      {"poses", pass.poses},
+                                      {"wall_s", pass.wall_s}};
+  std::ostringstream text;
+  text << "smoother: " << s.smoothed_samples << " of " << s.imu_samples << " IMU samples smoothed over "
+       << s.intervals << " covariance intervals in " << s.segments << " segment(s)";
+  if (s.singular > 0) text << ", " << s.singular << " interval(s) not invertible";
+  text << "; record " << static_cast<double>(record.bytes()) / 1e6 << " MB (" << record.replaced()
+       << " records replaced by re-propagation); " << pass.poses << " smoothed poses in " << pass.wall_s << " s\n";
+  result.smoother_text = text.str();
+  result.poses = pass.poses;
+}
+
 }  // namespace
 
 config::Config replay_config(const std::string& config_path, std::string_view first_format) {
@@ -133,9 +174,11 @@ ReplayResult run_replay(const ReplayOptions& options) {
                       {"--nmea-out", options.nmea_out}});
   const MeasurementMerger::Options merge{.chunk_bytes = 16 * 1024, .allow_truncated = options.allow_truncated};
   MeasurementMerger merger = recording ? MeasurementMerger(*recording, merge) : MeasurementMerger(specs, merge);
-  std::unique_ptr<TruthAccuracy> accuracy;
+  std::unique_ptr<TruthAccuracy> accuracy, forward_accuracy;
   if (!options.truth_path.empty()) {
-    accuracy = std::make_unique<TruthAccuracy>(options.truth_path, Eigen::Vector3d(config.gnss.lever_arm_m.data()));
+    const Eigen::Vector3d lever_arm_m(config.gnss.lever_arm_m.data());
+    accuracy = std::make_unique<TruthAccuracy>(options.truth_path, lever_arm_m);
+    if (options.smooth) forward_accuracy = std::make_unique<TruthAccuracy>(options.truth_path, lever_arm_m);
   }
   PoseOutputs outputs;
   if (!options.fe_out.empty()) outputs.add(std::make_unique<FeFileWriter>(options.fe_out));
@@ -155,18 +198,33 @@ ReplayResult run_replay(const ReplayOptions& options) {
     outages = GnssOutagePlan::parse(options.gnss_outage, error);
     if (!outages) throw CommandError(error);
   }
-  ReplayObserver observer(outputs, accuracy.get());
-  FusionRunner runner(filter::options_from_config(config),
+  // Smoothing: the forward pass writes nothing and is only scored; the outputs wait for the
+  // smoothed solution.
+  PoseOutputs no_outputs;
+  ReplayObserver observer(options.smooth ? no_outputs : outputs,
+                          options.smooth ? forward_accuracy.get() : accuracy.get());
+  const filter::FilterOptions filter_options = filter::options_from_config(config);
+  FusionRunner runner(filter_options,
                       {.output_rate_hz = rate_hz, .solutions = observer.solutions(), .gnss_outages = outages},
                       observer);
   if (outages) observer.score_outages(*outages, runner);
+  std::unique_ptr<filter::ForwardRecorder> record;
+  if (options.smooth) {
+    try {
+      record = std::make_unique<filter::ForwardRecorder>();
+    } catch (const std::runtime_error& e) {
+      throw CommandError(e.what());
+    }
+    runner.engine().record_to(record.get());
+  }
   ReplayResult result;
   result.summary = fuse_log(merger, runner, observer,
                             {.progress_bar = options.progress, .interrupt = options.interrupt});
+  if (record) smooth_record(*record, runner, filter_options, rate_hz, outages, outputs, accuracy.get(), result);
   outputs.commit();
 
   result.imu_samples = runner.imu_samples();
-  result.poses = runner.poses();
+  if (!options.smooth) result.poses = runner.poses();
   Summary& summary = result.summary;
   summary.extra["output"] = {{"rate_hz", rate_hz}, {"poses", result.poses}};
   if (outages) {
@@ -174,13 +232,9 @@ ReplayResult run_replay(const ReplayOptions& options) {
         {"period_s", outages->period_s}, {"duration_s", outages->duration_s}, {"start_s", outages->start_s}};
   }
   if (lcm) summary.extra["lcm"] = {{"published", lcm->published()}, {"failures", lcm->failures()}};
-  if (accuracy) {
-    nlohmann::ordered_json a = accuracy->to_json();
-    a["truth"] = options.truth_path;
-    summary.extra["accuracy"] = a;
-    std::ostringstream text;
-    accuracy->print(text);
-    result.accuracy_text = text.str();
+  if (accuracy) result.accuracy_text = report_accuracy(*accuracy, options.truth_path, "accuracy", summary);
+  if (forward_accuracy) {
+    result.forward_accuracy_text = report_accuracy(*forward_accuracy, options.truth_path, "forward_accuracy", summary);
   }
   result.truncated_inputs = merger.truncated_inputs();
   result.failure = replay_failure(summary, result.imu_samples, runner.engine().modes_reached());

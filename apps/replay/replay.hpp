@@ -33,6 +33,9 @@ struct ReplayOptions {
   std::optional<std::string> lcm_url;  // --lcm [URL]: NAVFUSE_POSE / NAVFUSE_IMU at the pose rate ("" = LCM's default)
   std::optional<double> output_rate_hz;  // overrides the config's output.rate_hz
   std::string gnss_outage;  // --gnss-outage PERIOD_S:DURATION_S[:START_S] (empty: none)
+  // `navfuse smooth`: the fusion run is recorded and smoothed (RTS, filter/smoother/); the outputs
+  // and the truth comparison get the smoothed solution, the forward one is scored beside it.
+  bool smooth = false;
   bool allow_truncated = false;
   bool progress = false;  // progress bar on stderr (only drawn when it is a terminal)
   // Polled while replaying (InterruptSignals::received()): non-zero stops early; the outputs are
@@ -46,6 +49,8 @@ struct ReplayResult {
   std::uint64_t poses = 0;        // pose epochs written
   std::vector<std::string> truncated_inputs;
   std::string accuracy_text;      // printable accuracy table (with --truth)
+  std::string forward_accuracy_text;  // smooth: the forward filter's table beside it
+  std::string smoother_text;          // smooth: what the smoother did, one paragraph
   // Why the run produced nothing useful, one line (empty: it did): no IMU sample fused (an input
   // with no frame decoded, a log without IMU, every sample rejected), or the filter never left
   // initialization. `navfuse replay` exits 2 with it, after the summary.

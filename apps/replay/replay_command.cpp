@@ -39,10 +39,12 @@ int run(ReplayArgs& args) {
   }
   if (!args.quiet) {
     result.summary.print(std::cout, /*decode_only=*/false);
-    std::cout << "poses: " << result.poses << "\n";
+    std::cout << result.smoother_text;
+    std::cout << (args.options.smooth ? "smoothed poses: " : "poses: ") << result.poses << "\n";
     if (const auto it = result.summary.extra.find("lcm"); it != result.summary.extra.end()) {
       std::cout << "lcm: " << (*it)["published"] << " messages published, " << (*it)["failures"] << " failed\n";
     }
+    if (!result.forward_accuracy_text.empty()) std::cout << "forward filter:\n" << result.forward_accuracy_text << "smoothed:\n";
     std::cout << result.accuracy_text;
   }
   if (result.imu_time_backwards > 0) {
@@ -51,20 +53,27 @@ int run(ReplayArgs& args) {
                  "with itself, or a clock reset?); the outputs do not cover them\n";
   }
   if (result.summary.interrupted_by != 0) {
-    std::cerr << "navfuse: replay interrupted by signal " << result.summary.interrupted_by
+    std::cerr << "navfuse: " << (args.options.smooth ? "smooth" : "replay") << " interrupted by signal "
+              << result.summary.interrupted_by
               << ": outputs and summary cover the part processed\n";
     return 128 + result.summary.interrupted_by;
   }
-  if (!result.failure.empty()) throw CommandError("replay produced nothing useful: " + result.failure, 2);
+  if (!result.failure.empty()) {
+    throw CommandError(std::string(args.options.smooth ? "smooth" : "replay") + " produced nothing useful: " + result.failure, 2);
+  }
   return 0;
 }
 
 }  // namespace
 
-void add_replay_command(CLI::App& root, int& exit_code) {
+namespace {
+
+// replay and smooth take the same inputs, outputs and truth: one definition of their options.
+void add_fusion_command(CLI::App& root, int& exit_code, const char* name, const char* description, bool smooth) {
   auto args = std::make_shared<ReplayArgs>();
   ReplayOptions& o = args->options;
-  CLI::App* sub = root.add_subcommand("replay", "Replay logs through the filter as fast as possible");
+  o.smooth = smooth;
+  CLI::App* sub = root.add_subcommand(name, description);
   add_inputs(sub, o.inputs,
              "[FORMAT:]PATH, several merged by measurement time; FORMAT one of fe, mip, vn, unicore, rtklib, "
              "imutxt (detected when omitted)");
@@ -90,12 +99,29 @@ void add_replay_command(CLI::App& root, int& exit_code) {
                   "Withhold GNSS in windows PERIOD_S:DURATION_S[:START_S] from the first IMU sample (e.g. 30:10)");
   sub->add_flag("--allow-truncated", o.allow_truncated, "Replay an input whose last frame is cut off");
   add_quiet_flag(sub, args->quiet, "summary, accuracy or progress bar");
-  add_examples(sub, {{"the demo drive with its wheel speeds, scored against truth, poses to CSV",
-                      "navfuse replay --config data/demo/vn300.yaml data/demo/vn300.vnb data/demo/vn300_wheel.p1log "
-                      "--truth data/demo/truth.csv --csv pose.csv"},
-                     {"a `navfuse run --record rec` recording: the live run's outputs again",
-                      "navfuse replay --recording rec --fe-out pose.p1log --mip-out pose.mip"}});
+  if (smooth) {
+    add_examples(sub, {{"the demo drive smoothed, scored against truth (forward and smoothed), poses to CSV",
+                        "navfuse smooth --config data/demo/vn300.yaml data/demo/vn300.vnb data/demo/vn300_wheel.p1log "
+                        "--truth data/demo/truth.csv --csv smoothed.csv"},
+                       {"30 s GNSS outages every 60 s bridged by the smoother",
+                        "navfuse smooth --config data/demo/vn300.yaml data/demo/vn300.vnb --gnss-outage 60:30 "
+                        "--truth data/demo/truth.csv"}});
+  } else {
+    add_examples(sub, {{"the demo drive with its wheel speeds, scored against truth, poses to CSV",
+                        "navfuse replay --config data/demo/vn300.yaml data/demo/vn300.vnb data/demo/vn300_wheel.p1log "
+                        "--truth data/demo/truth.csv --csv pose.csv"},
+                       {"a `navfuse run --record rec` recording: the live run's outputs again",
+                        "navfuse replay --recording rec --fe-out pose.p1log --mip-out pose.mip"}});
+  }
   sub->callback([args, &exit_code] { exit_code = run(*args); });
+}
+
+}  // namespace
+
+void add_replay_command(CLI::App& root, int& exit_code) {
+  add_fusion_command(root, exit_code, "replay", "Replay logs through the filter as fast as possible", false);
+  add_fusion_command(root, exit_code, "smooth",
+                     "Replay logs through the filter, then smooth the whole pass (RTS) into the outputs", true);
 }
 
 }  // namespace navfuse::apps

@@ -3,6 +3,7 @@ target_sources(navfuse_apps PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/error_stats.cpp
   ${CMAKE_CURRENT_LIST_DIR}/replay.cpp
   ${CMAKE_CURRENT_LIST_DIR}/replay_command.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/smoothed_pass.cpp
   ${CMAKE_CURRENT_LIST_DIR}/truth_accuracy.cpp
   ${CMAKE_CURRENT_LIST_DIR}/truth_csv_rows.cpp
   ${CMAKE_CURRENT_LIST_DIR}/truth_nav_rows.cpp

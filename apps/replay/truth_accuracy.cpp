@@ -14,7 +14,9 @@ double angle_error_deg(double a_rad, double b_rad) {
   return std::abs(std::remainder(a_rad - b_rad, 2.0 * rot::kPi)) * rot::kRadToDeg;
 }
 
-bool navigating(const NavSolution& s) { return s.mode == NavMode::kNavigation || s.mode == NavMode::kDeadReckoning; }
+bool navigating(const NavSolution& s) {
+  return s.mode == NavMode::kNavigation || s.mode == NavMode::kDeadReckoning || s.mode == NavMode::kSmoothed;
+}
 
 // The solution at `t` between poses a and b: linear in position, velocity, rates; shorter arc in
 // the angles.

@@ -30,6 +30,7 @@ std::string_view to_string(NavMode mode) {
     case NavMode::kAhrs: return "ahrs";
     case NavMode::kNavigation: return "navigation";
     case NavMode::kDeadReckoning: return "dead_reckoning";
+    case NavMode::kSmoothed: return "smoothed";
   }
   return "unknown";
 }

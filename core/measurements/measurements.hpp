@@ -205,6 +205,7 @@ enum class NavMode : std::uint8_t {
   kAhrs = 3,           // attitude known, no position
   kNavigation = 4,     // full position/velocity/attitude with GNSS or equivalent aiding
   kDeadReckoning = 5,  // full navigation coasting on IMU (+wheel) without absolute aiding
+  kSmoothed = 6,       // post-processed (navfuse smooth): the forward filter was navigating here
 };
 std::string_view to_string(NavMode mode);
 

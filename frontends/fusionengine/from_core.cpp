@@ -65,6 +65,9 @@ SolutionType solution_type_of(NavMode mode, GnssFixType fix) {
       break;
     case NavMode::kDeadReckoning:
       return SolutionType::kIntegrate;
+    case NavMode::kSmoothed:  // FusionEngine has no post-processed type (§4.1): the aiding in use
+      if (fix == GnssFixType::kNone) return SolutionType::kIntegrate;
+      break;
     case NavMode::kNavigation:
       break;
   }

@@ -13,7 +13,8 @@ FilterStatusWord status_from_solution(const NavSolution& s) {
     case NavMode::kVerticalGyro: w.filter_state = filter::kStateVerticalGyro; break;
     case NavMode::kAhrs: w.filter_state = filter::kStateAhrs; break;
     case NavMode::kNavigation:
-    case NavMode::kDeadReckoning: w.filter_state = filter::kStateFullNav; break;
+    case NavMode::kDeadReckoning:
+    case NavMode::kSmoothed: w.filter_state = filter::kStateFullNav; break;  // MIP has no post-processed state
   }
   std::uint16_t condition = filter::kConditionStable;
   if (s.mode == NavMode::kInvalid || s.mode == NavMode::kInitializing) condition = filter::kConditionConverging;

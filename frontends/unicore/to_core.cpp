@@ -135,6 +135,7 @@ std::uint32_t gga_quality_from_solution(const NavSolution& s) {
   switch (s.mode) {
     case NavMode::kDeadReckoning: return 6;
     case NavMode::kNavigation:
+    case NavMode::kSmoothed:
       return (s.gnss_fix == GnssFixType::kDgnss || s.gnss_fix == GnssFixType::kRtkFloat ||
               s.gnss_fix == GnssFixType::kRtkFixed)
                  ? 2

@@ -64,7 +64,8 @@ InsStatus ins_status_of(const NavSolution& sol) {
     case NavMode::kInitializing: s.mode = InsMode::kAligning; break;
     case NavMode::kAhrs: s.mode = InsMode::kGnssLost; break;
     case NavMode::kNavigation:
-    case NavMode::kDeadReckoning: s.mode = InsMode::kTracking; break;
+    case NavMode::kDeadReckoning:
+    case NavMode::kSmoothed: s.mode = InsMode::kTracking; break;
   }
   const bool fix = sol.gnss_fix >= GnssFixType::kFix2D && sol.gnss_fix != GnssFixType::kDeadReckoning;
   s.gnss_fix = fix && sol.mode != NavMode::kDeadReckoning;

@@ -6,14 +6,9 @@
 # median of RUNS runs is printed with the rate it gives.
 #
 # Usage: tests/bench/replay_throughput.sh [BUILD_DIR] [RUNS]     (default build/release, 5)
-set -euo pipefail
-BUILD_DIR=${1:-build/release}
-RUNS=${2:-5}
-NAVFUSE="$BUILD_DIR/apps/navfuse"
-[ -x "$NAVFUSE" ] || { echo "replay_throughput: $NAVFUSE not found (build first)" >&2; exit 1; }
-[ -x /usr/bin/time ] || { echo "replay_throughput: /usr/bin/time missing (apt-get install time)" >&2; exit 1; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+BENCH_NAME=replay_throughput
+DEFAULT_RUNS=5
+source "$(dirname "$0")/whole_process_setup.sh"
 
 "$NAVFUSE" sim --scenario drive_9min --format vn --out "$work/drive.vnb" --wheel-out "$work/wheel.p1log" \
   --device-rate 50 --quiet

@@ -1,0 +1,29 @@
+// `navfuse smooth`'s second pass: the forward record of the replay's fusion run is smoothed
+// (filter/smoother/rts_smoother.hpp) and every smoothed IMU epoch goes through the replay's own
+// outputs (FusionEngine, MIP, CSV, LCM) at output.rate_hz, and to the truth comparison at the
+// pose epochs, exactly as the forward solution does in `replay`: mode "smoothed".
+#pragma once
+
+#include <cstdint>
+
+#include "apps/output/pose_outputs.hpp"
+#include "apps/replay/truth_accuracy.hpp"
+#include "core/measurements/measurements.hpp"
+#include "filter/filter_options.hpp"
+#include "filter/smoother/forward_record.hpp"
+#include "filter/smoother/rts_smoother.hpp"
+
+namespace navfuse::apps {
+
+struct SmoothedPassResult {
+  filter::SmootherStats stats;
+  std::uint64_t poses = 0;
+  double wall_s = 0.0;
+};
+
+// Throws CommandError when the record cannot be read back or an output fails.
+SmoothedPassResult write_smoothed(filter::ForwardRecorder& record, const filter::FilterOptions& options,
+                                  TimeSource time_source, double rate_hz, PoseOutputs& outputs,
+                                  TruthAccuracy* accuracy);
+
+}  // namespace navfuse::apps

@@ -1,0 +1,132 @@
+// A record of the forward filter pass, for the RTS smoother (filter/smoother/rts_smoother.hpp).
+//
+// What is written, in the order the filter does it (FilterCore calls the record_* hooks below
+// only when a ForwardRecorder is attached, Engine::record_to):
+//   kIntervalStart  before the first strapdown step of a covariance interval: the nominal state
+//                   x+ and covariance P+ the interval starts from (after every update, reset and
+//                   variance floor since the last propagation: the smoother's posterior).
+//   kImu            after every strapdown step: the nominal state at the sample, the compensated
+//                   rate and force, and the forward solution's mode / fix / flag words.
+//   kPropagation    when the covariance is propagated over the interval: the nominal state x-
+//                   (the strapdown of x+), the transition matrix Phi = I + F T + (F T)^2 / 2 of
+//                   the step (process_model.hpp; formed here, only when recording) and the
+//                   propagated P- (the smoother's prior).
+//   kUpdate         every accepted measurement update: state before and after, residual, H, R,
+//                   the correction dx and the NIS (diagnostics and tests; the smoother itself
+//                   needs only the next kIntervalStart, which carries P after every change of P,
+//                   including the ones no update record sees).
+//   kRestart        the filter restarted (divergence, time gap, reset): nothing is smoothed across.
+//   kBreak          the nominal state moved inside an interval without an update (alignment,
+//                   re-anchoring): not smoothed across either.
+//   kClose          the filter's final state and covariance (written by close()).
+//
+// Late measurements: each FilterCore carries the index of its next record (RecordHook). When
+// the Engine re-propagates from a snapshot, the snapshot's index comes back, and the first record
+// written at an index already used truncates the record there: a re-propagated span replaces what
+// it recomputes, so the record is always the history of the final forward solution.
+//
+// Storage: an anonymous temporary file (std::tmpfile, deleted on close), written sequentially and
+// read by record index; memory holds one 9-byte index entry per record. Covariances are stored as
+// the upper triangle of the active block, Phi as its rows with dynamics (the rest are identity):
+// about 2 kB per covariance interval and 0.3 kB per IMU sample for the 16-state filter.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/measurements/measurements.hpp"
+#include "filter/ekf.hpp"
+#include "filter/filter_core.hpp"
+#include "filter/nav_state.hpp"
+
+namespace navfuse::filter {
+
+enum class RecordType : std::uint8_t {
+  kIntervalStart = 1,
+  kImu = 2,
+  kPropagation = 3,
+  kUpdate = 4,
+  kRestart = 5,
+  kBreak = 6,
+  kClose = 7,
+};
+
+// One record read back. Only the fields of its type are meaningful.
+struct ForwardRecordEntry {
+  RecordType type = RecordType::kRestart;
+  std::int64_t time_ns = 0;
+  int n = 0;                       // active dimension of p / phi
+  NavState x;                      // interval start, IMU, propagation, close; update: after
+  Covariance p = Covariance::Zero();    // interval start, propagation (P-), close
+  Covariance phi = Covariance::Identity();  // propagation
+  bool navigating = false;         // interval start, close: levelled, heading and position known
+  // kImu
+  Eigen::Vector3d rate_b_rps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force_b_mps2 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gravity_ned_mps2 = Eigen::Vector3d::Zero();
+  NavMode mode = NavMode::kInvalid;
+  GnssFixType gnss_fix = GnssFixType::kNone;
+  std::uint32_t valid = 0;         // NavSolution::header.valid of the forward solution
+  std::uint32_t status_flags = 0;  // NavSolution::status_flags of the forward solution
+  // kUpdate
+  NavState x_before;
+  Observation obs;
+  StateVector dx = StateVector::Zero();
+  double nis = 0.0;
+};
+
+class ForwardRecorder {
+ public:
+  // Opens the temporary file: std::runtime_error when none can be created.
+  ForwardRecorder();
+  ~ForwardRecorder();
+  ForwardRecorder(const ForwardRecorder&) = delete;
+  ForwardRecorder& operator=(const ForwardRecorder&) = delete;
+
+  // Appends the record numbered `index` (bytes of `payload` after the type byte); an index
+  // already written first truncates the record there (see the header comment).
+  void write(std::uint64_t index, RecordType type, const std::vector<unsigned char>& payload);
+  // The final state: a kClose record after everything `core` wrote.
+  void close(const FilterCore& core);
+
+  std::size_t size() const { return offsets_.size(); }
+  RecordType type(std::size_t i) const { return types_[i]; }
+  // Reads record `i`. False, with error() set, on an I/O error.
+  bool read(std::size_t i, ForwardRecordEntry& out);
+
+  std::uint64_t bytes() const { return end_; }            // on disk, records in use
+  std::uint64_t replaced() const { return replaced_; }    // records dropped by re-propagation
+  const std::string& error() const { return error_; }     // first I/O error, empty when none
+
+ private:
+  void fail(const std::string& what);
+
+  std::FILE* file_ = nullptr;
+  std::vector<std::uint64_t> offsets_;
+  std::vector<RecordType> types_;
+  std::uint64_t end_ = 0;       // logical end of the record
+  std::uint64_t position_ = 0;  // where the write position is (a seek only after truncation)
+  bool unflushed_ = false;      // written bytes may still be in stdio's buffer
+  std::uint64_t replaced_ = 0;
+  std::vector<unsigned char> buffer_;
+  std::string error_;
+};
+
+// Hooks FilterCore calls when core.record.sink is set (filter_core.cpp).
+// Before each strapdown step: kIntervalStart at an interval's first step, else kBreak if the
+// state moved since the previous step.
+void record_step_start(FilterCore& core);
+// After each strapdown step.
+void record_imu(FilterCore& core, const FilterOptions& o);
+// After the covariance was propagated over core.step (before the step is cleared).
+void record_propagation(FilterCore& core);
+// After an accepted update that moved the state from `before`.
+void record_update(FilterCore& core, const NavState& before, const Observation& obs, const UpdateResult& r);
+// Before the filter restarts.
+void record_restart(FilterCore& core);
+
+}  // namespace navfuse::filter
