@@ -7,6 +7,7 @@
 #include <cstring>
 #include <span>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace navfuse::bytes {
@@ -18,13 +19,8 @@ class Writer {
 
   template <typename T>
   void write(T value) {
-    static_assert(std::is_arithmetic_v<T>, "write() takes integers and floating point");
     std::uint8_t raw[sizeof(T)];
-    std::memcpy(raw, &value, sizeof(T));
-    constexpr bool native_little = std::endian::native == std::endian::little;
-    if constexpr (sizeof(T) > 1 && kLittle != native_little) {
-      for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(raw[i], raw[sizeof(T) - 1 - i]);
-    }
+    to_bytes(value, raw);
     out_.insert(out_.end(), raw, raw + sizeof(T));
   }
   void u8(std::uint8_t v) { write(v); }
@@ -43,15 +39,23 @@ class Writer {
   // Overwrites sizeof(T) bytes at absolute offset `at` of the vector (must already exist).
   template <typename T>
   void patch(std::size_t at, T value) {
-    std::vector<std::uint8_t> tmp;
-    Writer<kLittle> w(tmp);
-    w.write(value);
-    std::memcpy(out_.data() + at, tmp.data(), sizeof(T));
+    to_bytes(value, out_.data() + at);
   }
 
   std::size_t size() const { return out_.size(); }
 
  private:
+  // `value` in the writer's byte order, into sizeof(T) bytes at `raw`.
+  template <typename T>
+  static void to_bytes(T value, std::uint8_t* raw) {
+    static_assert(std::is_arithmetic_v<T>, "write() takes integers and floating point");
+    std::memcpy(raw, &value, sizeof(T));
+    constexpr bool native_little = std::endian::native == std::endian::little;
+    if constexpr (sizeof(T) > 1 && kLittle != native_little) {
+      for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(raw[i], raw[sizeof(T) - 1 - i]);
+    }
+  }
+
   std::vector<std::uint8_t>& out_;
 };
 

@@ -3,6 +3,8 @@
 // printed in the vendor documents (digests in ../shared/reference/).
 #include "core/bytes/checks.hpp"
 
+#include "core/bytes/crc32_kernels.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -30,6 +32,40 @@ TEST(Crc32, ChainingEqualsOneShotForEverySplit) {
   for (std::size_t split = 0; split <= data.size(); ++split) {
     const std::span<const std::uint8_t> s(data);
     EXPECT_EQ(crc32(s.subspan(split), crc32(s.first(split))), whole) << split;
+  }
+}
+
+TEST(Crc32, LongBuffersMatchAnIndependentImplementation) {
+  // Values from Python's zlib.crc32 (zlib's own tables), for buffers long enough to take the
+  // carry-less-multiplication path (>= 64 bytes) on CPUs that have it.
+  std::vector<std::uint8_t> ramp(256);
+  for (std::size_t i = 0; i < ramp.size(); ++i) ramp[i] = static_cast<std::uint8_t>(i);
+  EXPECT_EQ(crc32(ramp), 0x29058C73u);
+  std::string digits;
+  for (int i = 0; i < 100; ++i) digits += "123456789";
+  EXPECT_EQ(crc32(as_bytes(digits)), 0x09FD0FD7u);
+  std::vector<std::uint8_t> mixed(1000);
+  for (std::size_t i = 0; i < mixed.size(); ++i) mixed[i] = static_cast<std::uint8_t>(i * 37 + 11);
+  EXPECT_EQ(crc32(mixed), 0xC3905A1Du);
+  EXPECT_EQ(crc32(std::vector<std::uint8_t>(4096, 0xFF)), 0xF154670Au);
+}
+
+TEST(Crc32, CarrylessMultiplyEqualsTablesForEveryLengthAndAlignment) {
+  if (!detail::crc32_clmul_available()) GTEST_SKIP() << "no PCLMULQDQ on this CPU";
+  std::vector<std::uint8_t> data(1100);
+  std::uint32_t x = 12345;
+  for (auto& b : data) {
+    x = x * 1103515245u + 12345u;  // any bytes will do; a fixed LCG keeps the test repeatable
+    b = static_cast<std::uint8_t>(x >> 23);
+  }
+  const std::span<const std::uint8_t> all(data);
+  for (std::size_t offset = 0; offset < 16; ++offset) {
+    for (std::size_t n = 0; offset + n <= data.size(); n += (n < 300 ? 1 : 37)) {
+      const auto s = all.subspan(offset, n);
+      for (std::uint32_t reg : {0u, 0xFFFFFFFFu, 0x1234ABCDu}) {
+        ASSERT_EQ(detail::crc32_clmul(s, reg), detail::crc32_slice8(s, reg)) << offset << " " << n << " " << reg;
+      }
+    }
   }
 }
 
