@@ -49,4 +49,25 @@ struct FrontendInfo {
   std::unique_ptr<StreamDecoder> (*make_decoder_in_week)(std::int32_t gps_week) = nullptr;
 };
 
+// The registration of a file format that is read, never written and not a device (imutxt,
+// rtklib): no encoder, no set-up commands or replies, no device errors, generic config defaults.
+constexpr FrontendInfo file_reader_info(std::string_view format, std::string_view description,
+                                        std::size_t (*probe)(std::span<const std::uint8_t>),
+                                        std::unique_ptr<StreamDecoder> (*make_decoder)(),
+                                        std::unique_ptr<StreamDecoder> (*make_decoder_in_week)(std::int32_t) = nullptr) {
+  return FrontendInfo{
+      .format = format,
+      .description = description,
+      .probe = probe,
+      .make_decoder = make_decoder,
+      .make_encoder = nullptr,
+      .default_profile = config::DeviceProfile::kGeneric,
+      .setup_commands = nullptr,
+      .find_refusal = nullptr,
+      .device_errors = {},
+      .odometry_input = false,
+      .make_decoder_in_week = make_decoder_in_week,
+  };
+}
+
 }  // namespace navfuse::frontends

@@ -37,19 +37,9 @@ std::unique_ptr<StreamDecoder> make_decoder_in_week(std::int32_t week) {
 }  // namespace
 
 const FrontendInfo& imutxt::frontend() {
-  static const FrontendInfo info{
-      .format = "imutxt",
-      .description = "KF-GINS-style IMU text: GPS seconds of week, angle (rad) and velocity (m/s) increments",
-      .probe = &probe,
-      .make_decoder = &make_decoder,
-      .make_encoder = nullptr,
-      .default_profile = config::DeviceProfile::kGeneric,
-      .setup_commands = nullptr,  // a file format, not a device
-      .find_refusal = nullptr,
-      .device_errors = {},
-      .odometry_input = false,
-      .make_decoder_in_week = &make_decoder_in_week,
-  };
+  static const FrontendInfo info = file_reader_info(
+      "imutxt", "KF-GINS-style IMU text: GPS seconds of week, angle (rad) and velocity (m/s) increments", &probe,
+      &make_decoder, &make_decoder_in_week);
   return info;
 }
 

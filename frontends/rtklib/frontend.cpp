@@ -25,19 +25,9 @@ std::unique_ptr<StreamDecoder> make_decoder() { return std::make_unique<rtklib::
 }  // namespace
 
 const FrontendInfo& rtklib::frontend() {
-  static const FrontendInfo info{
-      .format = "rtklib",
-      .description = "RTKLIB solution (.pos): GPST/UTC, lat/lon/height or ECEF, Q, std devs, velocity",
-      .probe = &probe,
-      .make_decoder = &make_decoder,
-      .make_encoder = nullptr,
-      .default_profile = config::DeviceProfile::kGeneric,
-      .setup_commands = nullptr,  // a file format, not a device
-      .find_refusal = nullptr,
-      .device_errors = {},
-      .odometry_input = false,
-      .make_decoder_in_week = nullptr,
-  };
+  static const FrontendInfo info = file_reader_info(
+      "rtklib", "RTKLIB solution (.pos): GPST/UTC, lat/lon/height or ECEF, Q, std devs, velocity", &probe,
+      &make_decoder);
   return info;
 }
 
