@@ -21,18 +21,19 @@ std::uint32_t default_source_id(std::uint16_t message_type) {
 
 std::size_t begin_frame(std::vector<std::uint8_t>& out, std::uint16_t message_type, std::uint8_t message_version,
                         std::uint32_t sequence, std::uint32_t source_id) {
+  // The header grows the buffer once (reserved, CRC and payload size stay zero until
+  // end_frame()) and its fields are patched in: one append per frame instead of one per field,
+  // which a pose output per IMU sample pays three times.
   const std::size_t start = out.size();
+  out.resize(start + kHeaderSize);
   bytes::LeWriter w(out);
-  w.u8(kSync0);
-  w.u8(kSync1);
-  w.u16(0);  // reserved
-  w.u32(0);  // CRC: end_frame()
-  w.u8(kProtocolVersion);
-  w.u8(message_version);
-  w.u16(message_type);
-  w.u32(sequence);
-  w.u32(0);  // payload size: end_frame()
-  w.u32(source_id);
+  w.patch(start, kSync0);
+  w.patch(start + 1, kSync1);
+  w.patch(start + kProtocolVersionOffset, kProtocolVersion);
+  w.patch(start + kMessageVersionOffset, message_version);
+  w.patch(start + kMessageTypeOffset, message_type);
+  w.patch(start + kSequenceOffset, sequence);
+  w.patch(start + kSourceIdOffset, source_id);
   return start;
 }
 
