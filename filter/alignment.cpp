@@ -137,7 +137,6 @@ void set_heading(FilterCore& c, double yaw_rad, double std_rad) {
 }
 
 void place_at_fix(FilterCore& c, const FilterOptions& o, const GnssPosition& fix) {
-  (void)o;
   const Eigen::Matrix3d c_nb = c.x.q_nb.toRotationMatrix();
   const Eigen::Vector3d lever_n = c_nb * c.x.gnss_lever_arm_m;
   // The fix is older than the state by (state time - fix time): move along the velocity.
@@ -150,6 +149,8 @@ void place_at_fix(FilterCore& c, const FilterOptions& o, const GnssPosition& fix
   Eigen::Matrix3d cov = (fix.header.valid & GnssPosition::kValidCovariance) != 0
                             ? fix.cov_ned_m2
                             : Eigen::Matrix3d(default_gnss_position_std_m(fix.fix).array().square().matrix().asDiagonal());
+  const double std_scale = o.gnss_position_std_scale_for(fix.fix);
+  cov *= std_scale * std_scale;
   if (!c.mode.heading_known) {
     const double lever_h_sq = c.x.gnss_lever_arm_m.head<2>().squaredNorm();
     cov(0, 0) += lever_h_sq;

@@ -10,6 +10,7 @@
 #include "apps/common/input_spec.hpp"
 #include "apps/lcm/lcm_pose_writer.hpp"
 #include "apps/output/csv_pose_writer.hpp"
+#include "apps/output/innovation_csv_writer.hpp"
 #include "apps/output/encoded_file_writer.hpp"
 #include "apps/output/output_paths.hpp"
 #include "apps/output/pose_output_thread.hpp"
@@ -115,7 +116,8 @@ ReplayResult run_replay(const ReplayOptions& options) {
   for (const InputSpec& spec : specs) input_paths.push_back(spec.path);
   if (!options.truth_path.empty()) input_paths.push_back(options.truth_path);
   check_output_paths(input_paths,
-                     {{"--fe-out", options.fe_out}, {"--mip-out", options.mip_out}, {"--csv", options.csv_out}});
+                     {{"--fe-out", options.fe_out}, {"--mip-out", options.mip_out}, {"--csv", options.csv_out},
+                      {"--innovations-csv", options.innovations_csv}});
   MeasurementMerger merger(specs, {.chunk_bytes = 16 * 1024, .allow_truncated = options.allow_truncated});
   std::unique_ptr<TruthAccuracy> accuracy;
   if (!options.truth_path.empty()) {
@@ -143,10 +145,16 @@ ReplayResult run_replay(const ReplayOptions& options) {
                       {.output_rate_hz = rate_hz, .solutions = observer.solutions(), .gnss_outages = outages},
                       observer);
   if (outages) observer.score_outages(*outages, runner);
+  std::unique_ptr<InnovationCsvWriter> innovations;
+  if (!options.innovations_csv.empty()) {
+    innovations = std::make_unique<InnovationCsvWriter>(options.innovations_csv);
+    runner.engine().set_innovation_sink(&InnovationCsvWriter::sink, innovations.get());
+  }
   ReplayResult result;
   result.summary = fuse_log(merger, runner, observer,
                             {.progress_bar = options.progress, .interrupt = options.interrupt});
   outputs.commit();
+  if (innovations) innovations->commit();
 
   result.imu_samples = runner.imu_samples();
   result.poses = runner.poses();

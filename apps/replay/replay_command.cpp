@@ -75,6 +75,8 @@ void add_replay_command(CLI::App& root, int& exit_code) {
   sub->add_option("--fe-out", o.fe_out, "Write FusionEngine Pose/PoseAux/GNSSInfo/IMUOutput to this file");
   sub->add_option("--mip-out", o.mip_out, "Write MIP filter (0x82) packets to this file");
   sub->add_option("--csv", o.csv_out, "Write one CSV row per pose to this file");
+  sub->add_option("--innovations-csv", o.innovations_csv,
+                  "Write one CSV row per aiding measurement: result, NIS, residuals and their predicted std");
   args->lcm = sub->add_option("--lcm", args->lcm_url,
                               "Publish NAVFUSE_POSE and NAVFUSE_IMU at the pose rate on LCM [URL]")
                    ->expected(0, 1);
