@@ -151,6 +151,8 @@ void place_at_fix(FilterCore& c, const FilterOptions& o, const GnssPosition& fix
   Eigen::Matrix3d cov = (fix.header.valid & GnssPosition::kValidCovariance) != 0
                             ? fix.cov_ned_m2
                             : Eigen::Matrix3d(default_gnss_position_std_m(fix.fix).array().square().matrix().asDiagonal());
+  const double std_scale = o.gnss_position_std_scale_for(fix.fix);
+  cov *= std_scale * std_scale;
   if (!c.mode.heading_known) {
     const double lever_h_sq = lever_b.head<2>().squaredNorm();
     cov(0, 0) += lever_h_sq;

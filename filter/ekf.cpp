@@ -67,6 +67,7 @@ void joseph_update(Covariance& p, const Observation& obs, double gate, UpdateRes
     return;
   }
   result.nis = residual.dot(llt.solve(residual));
+  result.s_diag.template head<M>() = s.diagonal();
   if (gate > 0.0 && !(result.nis <= gate)) return;
 
   // K = P H^T S^-1, as (S^-1 H P)^T since S is symmetric.

@@ -38,6 +38,7 @@ struct UpdateResult {
   bool accepted = false;
   bool singular = false;
   double nis = 0.0;  // normalised innovation squared, r^T S^-1 r
+  Eigen::Vector3d s_diag = Eigen::Vector3d::Zero();  // diag of S = H P H^T + R (rows used)
   StateVector dx = StateVector::Zero();
 };
 

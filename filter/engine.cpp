@@ -41,6 +41,17 @@ void Engine::process(const Measurement& m) {
     ++stats_.of(kind).rejected[static_cast<std::size_t>(*reason)];
     return;
   }
+  if (const double offset_s = options_.time_offset_s(kind); offset_s != 0.0) {
+    // Onto the common time base before anything (ordering, latency, interpolation) uses it.
+    Measurement shifted = m;
+    header_of(shifted).time_ns += to_ns(offset_s);
+    dispatch(kind, shifted);
+    return;
+  }
+  dispatch(kind, m);
+}
+
+void Engine::dispatch(MeasurementKind kind, const Measurement& m) {
   if (kind == MeasurementKind::kImu) {
     process_imu(std::get<ImuSample>(m));
   } else {
@@ -98,12 +109,20 @@ void Engine::fuse_entry(Entry& e) {
   e.applied = true;
   if (!e.counted) {
     count(kind_of(e.m), r);
+    if (innovation_sink_ != nullptr) innovation_sink_(innovation_context_, e.m, r);
     e.counted = true;
   }
 }
 
 void Engine::count(MeasurementKind kind, const FuseResult& r) {
   KindStats& st = stats_.of(kind);
+  if (r.rows > 0) {
+    InnovationStats& in = st.innovation;
+    ++in.count;
+    in.nis_sum += r.nis;
+    in.nis_per_dim_sum += r.nis / r.rows;
+    if (!r.used && r.reason == RejectReason::kChi2Gate) ++in.above_gate;
+  }
   if (r.used) {
     ++st.used;
   } else {
@@ -214,6 +233,9 @@ const FilterStats& Engine::stats() const {
   stats_view_.gnss_recoveries = core_.mode.gnss_recoveries;
   stats_view_.zupts = core_.mode.zupts;
   stats_view_.nhc_updates = core_.mode.nhc_updates;
+  stats_view_.covariance_inflations = core_.adaptation.inflations;
+  stats_view_.process_noise_scale = core_.adaptation.process_noise_scale;
+  stats_view_.max_process_noise_scale = core_.adaptation.max_process_noise_scale;
   return stats_view_;
 }
 

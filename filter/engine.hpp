@@ -82,6 +82,13 @@ class Engine {
   // Records the forward pass for the smoother from now on (filter/smoother/forward_record.hpp);
   // nullptr stops. The recorder must outlive the recording.
   void record_to(ForwardRecorder* recorder) { core_.record.sink = recorder; }
+  // Called once per aiding measurement when its outcome is first known (not again when a late
+  // measurement re-propagates it): `--innovations-csv`.
+  using InnovationSink = void (*)(void* context, const Measurement& m, const FuseResult& result);
+  void set_innovation_sink(InnovationSink sink, void* context) {
+    innovation_sink_ = sink;
+    innovation_context_ = context;
+  }
 
   // Internals for tests and tools: full covariance and nominal state.
   const FilterCore& core() const { return core_; }
@@ -104,6 +111,7 @@ class Engine {
     bool counted = false;
   };
 
+  void dispatch(MeasurementKind kind, const Measurement& m);
   void process_imu(const ImuSample& s);
   void process_aiding(const Measurement& m);
   void run_increment(const ImuRecord& record);
@@ -131,6 +139,8 @@ class Engine {
 
   FilterStats stats_;
   mutable FilterStats stats_view_;
+  InnovationSink innovation_sink_ = nullptr;
+  void* innovation_context_ = nullptr;
   mutable NavSolution solution_;
   mutable bool solution_dirty_ = true;
 };

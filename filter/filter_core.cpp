@@ -52,9 +52,14 @@ void FilterCore::restart(const FilterOptions& o) {
   rate_b_rps.setZero();
   force_b_mps2.setZero();
   leveller = Leveller{};
+  velocity_match = VelocityMatchWindow{};
   stationary = StationaryState{};
   gnss = GnssControlState{};
   odometry = OdometryState{};
+  const AdaptationState previous_adaptation = adaptation;
+  adaptation = AdaptationState{};
+  adaptation.inflations = previous_adaptation.inflations;  // counters survive restarts
+  adaptation.max_process_noise_scale = previous_adaptation.max_process_noise_scale;
   const ModeState previous = mode;
   mode = ModeState{};
   mode.reached_mask = previous.reached_mask;
@@ -89,6 +94,7 @@ bool FilterCore::propagate(const FilterOptions& o, const ImuIncrement& raw) {
   const std::int64_t previous_ns = x.time_ns;
   if (record.sink != nullptr) record_step_start(*this);
   strapdown_step(x, memory, comp, earth);
+  if (!mode.heading_known) accumulate_velocity_match(velocity_match, x.q_nb.toRotationMatrix(), comp.dvel_mps);
   step.add(comp);
   if (record.sink != nullptr) record_imu(*this, o);
   if (x.time_ns / grid_ns != previous_ns / grid_ns || step.dt_s >= o.covariance_interval_s - 1e-9) {
@@ -106,7 +112,15 @@ void FilterCore::apply_constraints(const FilterOptions& o, const ImuIncrement& r
 
 void FilterCore::flush_covariance(const FilterOptions& /*o*/) {
   if (step.dt_s <= 0.0) return;
-  propagate_covariance(ekf.p, ekf.n, x, earth, step, noise_density);
+  if (adaptation.process_noise_scale == 1.0) {
+    propagate_covariance(ekf.p, ekf.n, x, earth, step, noise_density);
+  } else {
+    // Vibration and unmodelled errors show up as extra velocity and attitude random walk.
+    StateVector q = noise_density;
+    q.segment<3>(sx::kVel) *= adaptation.process_noise_scale;
+    q.segment<3>(sx::kAtt) *= adaptation.process_noise_scale;
+    propagate_covariance(ekf.p, ekf.n, x, earth, step, q);
+  }
   // Vertical-gyro mode (MIP §6.2): the heading is relative, not estimated. Estimating it through
   // the earth-rate coupling from a heading error of tens of degrees would be far outside the
   // linearisation and drags roll and pitch with it.
@@ -121,13 +135,20 @@ FuseResult FilterCore::apply(const FilterOptions& o, const Observation& obs, dou
   flush_covariance(o);
   const UpdateResult r = ekf.update(obs, gate);
   if (r.singular) return FuseResult::reject(RejectReason::kNumerical);
-  if (!r.accepted) return FuseResult::reject(RejectReason::kChi2Gate);
+  FuseResult out = r.accepted ? FuseResult::ok() : FuseResult::reject(RejectReason::kChi2Gate);
+  out.rows = obs.rows();
+  out.nis = r.nis;
+  for (int i = 0; i < out.rows; ++i) {
+    out.residual[static_cast<std::size_t>(i)] = obs.residual(i);
+    out.innovation_std[static_cast<std::size_t>(i)] = std::sqrt(r.s_diag(i));
+  }
+  if (!r.accepted) return out;
   std::optional<NavState> before;
   if (record.sink != nullptr) before = x;
   inject_error(x, r.dx);
   ekf.guard(variance_floor);
   if (before) record_update(*this, *before, obs, r);
-  return FuseResult::ok();
+  return out;
 }
 
 bool FilterCore::check_divergence(const FilterOptions& o) {

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "core/measurements/measurements.hpp"
+#include "filter/control/innovation_adaptation.hpp"
 #include "filter/ekf.hpp"
 #include "filter/filter_options.hpp"
 #include "filter/filter_stats.hpp"
@@ -18,6 +19,7 @@
 #include "filter/process_model.hpp"
 #include "filter/smoother/record_hook.hpp"
 #include "filter/strapdown.hpp"
+#include "filter/velocity_matching_alignment.hpp"
 
 namespace navfuse::filter {
 
@@ -27,12 +29,17 @@ inline double seconds_since(std::int64_t later, std::int64_t earlier) {
   return static_cast<double>(later - earlier) * 1e-9;
 }
 
-// The result of offering one measurement to the filter.
+// The result of offering one measurement to the filter, with its innovation when an update was
+// tried (accepted or gated): what `--innovations-csv` and the innovation statistics report.
 struct FuseResult {
   bool used = false;
   RejectReason reason = RejectReason::kInvalid;
-  static FuseResult ok() { return {true, RejectReason::kInvalid}; }
-  static FuseResult reject(RejectReason r) { return {false, r}; }
+  int rows = 0;       // measurement dimension of the update tried; 0: none was
+  double nis = 0.0;   // r^T S^-1 r
+  std::array<double, 3> residual{};        // h(x) - z, per row
+  std::array<double, 3> innovation_std{};  // sqrt(diag S), per row
+  static FuseResult ok() { return FuseResult{true, RejectReason::kInvalid}; }
+  static FuseResult reject(RejectReason r) { return FuseResult{false, r}; }
 };
 
 // Levelling accumulator (alignment.cpp).
@@ -128,9 +135,11 @@ struct FilterCore {
   Eigen::Vector3d force_b_mps2 = Eigen::Vector3d::Zero();  // compensated, newest sample
 
   Leveller leveller;
+  VelocityMatchWindow velocity_match;
   StationaryState stationary;
   GnssControlState gnss;
   OdometryState odometry;
+  AdaptationState adaptation;
   ModeState mode;
   RecordHook record;  // forward-pass recording for the smoother; kept across restart()
 

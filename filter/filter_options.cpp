@@ -35,14 +35,35 @@ FilterOptions options_from_config(const navfuse::config::Config& config) {
   // The odometer scale error is a state unless its prior is 0 (the scale is trusted as given).
   o.initial_wheel_scale_std = config.wheel.initial_scale_std;
   o.states.wheel_scale = config.wheel.initial_scale_std > 0.0;
+  const auto& g = config.gnss;
+  auto scale = [&o](GnssFixType fix, double v) { o.gnss_position_std_scale[static_cast<std::size_t>(fix)] = v; };
+  scale(GnssFixType::kRtkFixed, g.std_scale_rtk_fixed);
+  scale(GnssFixType::kRtkFloat, g.std_scale_rtk_float);
+  scale(GnssFixType::kPpp, g.std_scale_ppp);
+  scale(GnssFixType::kDgnss, g.std_scale_dgnss);
+  scale(GnssFixType::kSbas, g.std_scale_dgnss);
+  scale(GnssFixType::kFix2D, g.std_scale_single);
+  scale(GnssFixType::kFix3D, g.std_scale_single);
+  o.gnss_velocity_std_scale = g.velocity_std_scale;
+  o.imu_time_offset_s = imu.time_offset_s;
+  o.adaptation.window_s = config.adaptation.window_s;
+  o.adaptation.inflate_ratio = config.adaptation.inflate_ratio;
+  o.adaptation.max_process_noise_scale = config.adaptation.max_process_noise_scale;
+  o.gnss_time_offset_s = config.gnss.time_offset_s;
+  o.wheel_time_offset_s = config.wheel.time_offset_s;
 
   // Which constraints hold (Groves 2nd ed. §13.1.3 land-vehicle NHC; §16.2.4 ZUPT for
   // pedestrians). Only a wheeled vehicle cannot slip sideways; a boat or an aircraft is never
   // truly at rest, so only land and pedestrian platforms may assume zero velocity at stops.
   using navfuse::config::Platform;
   o.land_vehicle = config.platform == Platform::kLand;
-  o.zero_velocity_updates =
-      config.platform == Platform::kLand || config.platform == Platform::kPedestrian;
+  o.course_alignment = o.land_vehicle;
+  // A generic platform (the default) assumes nothing about how it moves: no NHC, no heading
+  // from the course, but zero-velocity updates when the IMU is quiet (a vibrating boat or
+  // aircraft is never detected as stationary anyway).
+  o.zero_velocity_updates = config.platform == Platform::kGeneric ||
+                            config.platform == Platform::kLand ||
+                            config.platform == Platform::kPedestrian;
   // A walker rarely exceeds 1.5 m/s; at 0.5 m/s an RTK velocity (~0.02 m/s) still gives the
   // course to ~2 deg, and kinematic_max_course_std_rad refuses a noisier one.
   constexpr double kPedestrianAlignmentSpeed_mps = 0.5;
@@ -53,6 +74,19 @@ FilterOptions options_from_config(const navfuse::config::Config& config) {
     o.initial_heading_rad = rot::wrap_pi(*config.alignment.initial_heading_deg * rot::kDegToRad);
   }
   return o;
+}
+
+double FilterOptions::time_offset_s(MeasurementKind kind) const {
+  switch (kind) {
+    case MeasurementKind::kImu: return imu_time_offset_s;
+    case MeasurementKind::kGnssPosition:
+    case MeasurementKind::kGnssVelocity:
+    case MeasurementKind::kGnssHeading: return gnss_time_offset_s;
+    case MeasurementKind::kWheelSpeed:
+    case MeasurementKind::kVehicleSpeed:
+    case MeasurementKind::kWheelTicks: return wheel_time_offset_s;
+    default: return 0.0;
+  }
 }
 
 }  // namespace navfuse::filter

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "core/config/config.hpp"
+#include "core/measurements/measurements.hpp"
 #include "filter/state_layout.hpp"
 
 namespace navfuse::filter {
@@ -29,8 +30,21 @@ struct ImuNoise {
   double initial_accel_scale_std = 1000e-6;
 };
 
+// Innovation-based adaptation (control/innovation_adaptation.hpp): how the filter notices and
+// repairs an overconfident covariance.
+struct AdaptationOptions {
+  bool enabled = true;
+  double window_s = 1.0;        // innovations looked at: "persistently" means within this
+  int min_samples = 3;          // and at least this many of them
+  double inflate_ratio = 3.0;   // median NIS per dimension that re-inflates P (errors 1.7x spread)
+  double max_inflation = 1e4;   // largest single scaling of the P block (std x 100)
+  double max_process_noise_scale = 100.0;  // random walks at most 10x the data sheet's std
+  double process_noise_gain = 0.25;        // exponent per sample of the scale's adaptation
+};
+
 struct FilterOptions {
   ImuNoise imu;
+  AdaptationOptions adaptation;
   StateSelection states;
 
   // Geometry (vehicle frame FRD, metres; mounting sensor -> vehicle roll, pitch, yaw, 3-2-1, rad).
@@ -73,12 +87,37 @@ struct FilterOptions {
   // below this: a fast speed from a noisy velocity gives no better course than a slow one.
   double kinematic_max_course_std_rad = 5.0 * 3.14159265358979323846 / 180.0;
   double kinematic_heading_std_rad = 2.0 * 3.14159265358979323846 / 180.0;
+  // Heading from the course assumes motion along the vehicle's x axis: only a land vehicle
+  // (platform: land) may use it. Velocity matching (velocity_matching_alignment.hpp) needs no
+  // such assumption and is always on.
+  bool course_alignment = true;
+  double velocity_match_window_s = 6.0;  // longer spans accumulate tilt and bias errors
+  int velocity_match_min_samples = 4;
+  double velocity_match_max_std_rad = 5.0 * 3.14159265358979323846 / 180.0;
+  // Added to the fit's own std for what it cannot see (tilt error, lever-arm motion).
+  double velocity_match_allowance_rad = 1.0 * 3.14159265358979323846 / 180.0;
 
   // GNSS control.
   double gnss_timeout_s = 2.0;   // no position aiding for longer: dead reckoning
   double gnss_recovery_s = 3.0;  // sustained rejection for longer: re-anchor to GNSS
   // Chi-square innovation gate per measurement dimension (1, 2, 3): the 99.99 % quantiles.
   std::array<double, 3> chi2_gate = {15.14, 18.42, 21.11};
+
+  // Multipliers on the GNSS receiver's std devs (config gnss.std_scale_*): position per fix type,
+  // indexed by GnssFixType; velocity one for all.
+  std::array<double, 10> gnss_position_std_scale = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+  double gnss_velocity_std_scale = 1.0;
+  double gnss_position_std_scale_for(GnssFixType fix) const {
+    const auto i = static_cast<std::size_t>(fix);
+    return i < gnss_position_std_scale.size() ? gnss_position_std_scale[i] : 1.0;
+  }
+
+  // Per-input time offsets, added to each measurement's timestamp before anything else sees it
+  // (config imu/gnss/wheel.time_offset_s): puts every input on one time base.
+  double imu_time_offset_s = 0.0;
+  double gnss_time_offset_s = 0.0;
+  double wheel_time_offset_s = 0.0;
+  double time_offset_s(MeasurementKind kind) const;
 
   // Numerics and timing.
   double covariance_interval_s = 0.05;  // covariance propagated at most this far per step

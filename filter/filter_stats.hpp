@@ -29,7 +29,22 @@ enum class RejectReason : std::uint8_t {
 };
 std::string_view to_string(RejectReason reason);
 
+// Innovations of the updates tried for one kind (accepted or gated), for consistency checks: a
+// consistent filter has a mean NIS per dimension near 1.
+struct InnovationStats {
+  std::uint64_t count = 0;
+  std::uint64_t above_gate = 0;
+  double nis_sum = 0.0;
+  double nis_per_dim_sum = 0.0;
+  double mean_nis() const { return count ? nis_sum / static_cast<double>(count) : 0.0; }
+  double mean_nis_per_dim() const { return count ? nis_per_dim_sum / static_cast<double>(count) : 0.0; }
+  double fraction_above_gate() const {
+    return count ? static_cast<double>(above_gate) / static_cast<double>(count) : 0.0;
+  }
+};
+
 struct KindStats {
+  InnovationStats innovation;
   std::uint64_t used = 0;
   std::uint64_t ignored = 0;
   std::array<std::uint64_t, static_cast<std::size_t>(RejectReason::kCount)> rejected{};
@@ -45,6 +60,9 @@ struct FilterStats {
   std::uint64_t replays = 0;          // late measurements fused by re-propagation
   std::uint64_t zupts = 0;           // zero-velocity updates applied
   std::uint64_t nhc_updates = 0;     // non-holonomic constraint updates applied
+  std::uint64_t covariance_inflations = 0;  // over-confidence repaired (innovation_adaptation)
+  double process_noise_scale = 1.0;         // current adaptive multiplier on the random walks
+  double max_process_noise_scale = 1.0;     // largest it reached
 
   const KindStats& of(MeasurementKind k) const { return kinds[static_cast<std::size_t>(k)]; }
   KindStats& of(MeasurementKind k) { return kinds[static_cast<std::size_t>(k)]; }

@@ -29,6 +29,12 @@ nlohmann::ordered_json Summary::to_json(bool decode_only) const {
       e["used"] = ks.used;
       e["rejected"] = nlohmann::ordered_json::object();
       for (const auto& [reason, n] : ks.rejected) e["rejected"][reason] = n;
+      if (ks.innovation) {
+        e["innovation"] = {{"count", ks.innovation->count},
+                           {"mean_nis", ks.innovation->mean_nis},
+                           {"mean_nis_per_dim", ks.innovation->mean_nis_per_dim},
+                           {"fraction_above_gate", ks.innovation->fraction_above_gate}};
+      }
     }
     m[std::string(to_string(static_cast<MeasurementKind>(k)))] = e;
   }
@@ -38,6 +44,12 @@ nlohmann::ordered_json Summary::to_json(bool decode_only) const {
                 {"imu_samples_per_s", run->imu_samples_per_s},
                 {"modes_reached", run->modes_reached}};
     if (interrupted_by != 0) j["run"]["interrupted_by_signal"] = interrupted_by;
+  }
+  if (adaptation && !decode_only) {
+    j["filter"] = {{"covariance_inflations", adaptation->covariance_inflations},
+                   {"process_noise_scale", adaptation->process_noise_scale},
+                   {"max_process_noise_scale", adaptation->max_process_noise_scale},
+                   {"gnss_recoveries", adaptation->gnss_recoveries}};
   }
   for (const auto& [key, value] : extra.items()) j[key] = value;
   return j;
@@ -71,6 +83,7 @@ void Summary::print(std::ostream& os, bool decode_only) const {
     }
     os << "\n";
   }
+  if (!decode_only) print_innovations(os);
   if (run) {
     os << "run: " << std::fixed << std::setprecision(3) << run->wall_s << " s wall, " << std::setprecision(0)
        << run->imu_samples_per_s << " IMU samples/s; modes reached:";
@@ -79,6 +92,31 @@ void Summary::print(std::ostream& os, bool decode_only) const {
     if (interrupted_by != 0) {
       os << "interrupted by signal " << interrupted_by << ": stopped early, outputs hold what was processed\n";
     }
+  }
+}
+
+void Summary::print_innovations(std::ostream& os) const {
+  bool header = false;
+  for (std::size_t k = 0; k < kinds.size(); ++k) {
+    const auto& in = kinds[k].innovation;
+    if (!in || in->count == 0) continue;
+    if (!header) {
+      os << "innovations (updates tried; a consistent filter has NIS per dimension ~1):\n";
+      header = true;
+    }
+    os << "  " << std::left << std::setw(18) << to_string(static_cast<MeasurementKind>(k)) << std::right
+       << " count " << std::setw(8) << in->count << "  mean NIS/dim " << std::fixed << std::setprecision(2)
+       << std::setw(7) << in->mean_nis_per_dim << "  above gate " << std::setprecision(1) << std::setw(5)
+       << 100.0 * in->fraction_above_gate << " %\n"
+       << std::defaultfloat;
+  }
+  if (adaptation && (adaptation->covariance_inflations > 0 || adaptation->max_process_noise_scale > 1.0 ||
+                     adaptation->gnss_recoveries > 0)) {
+    os << "filter adaptation: " << adaptation->covariance_inflations << " covariance re-inflations, "
+       << adaptation->gnss_recoveries << " GNSS re-anchors; process noise scale " << std::fixed
+       << std::setprecision(2) << adaptation->process_noise_scale << " at the end (max "
+       << adaptation->max_process_noise_scale << ")\n"
+       << std::defaultfloat;
   }
 }
 

@@ -2,7 +2,9 @@
 // measurement kind decoded / used / rejected-by-reason, and run statistics. Printed as text and
 // written as JSON with the DESIGN.md keys (contract): inputs[] {path, format, bytes, frames,
 // bad_frames, skipped_bytes}, measurements {kind: {decoded, used, rejected{reason: n}}},
-// run {wall_s, imu_samples_per_s, modes_reached}.
+// run {wall_s, imu_samples_per_s, modes_reached}. Added beside them: measurements.KIND.innovation
+// {count, mean_nis, mean_nis_per_dim, fraction_above_gate} and filter {covariance_inflations,
+// process_noise_scale, max_process_noise_scale, gnss_recoveries}.
 #pragma once
 
 #include <array>
@@ -26,10 +28,27 @@ struct InputSummary {
   frontends::StreamCounters counters;
 };
 
+// Innovations of the updates the filter tried for one kind (accepted or gated).
+struct InnovationSummary {
+  std::uint64_t count = 0;
+  double mean_nis = 0.0;
+  double mean_nis_per_dim = 0.0;  // ~1 for a consistent filter
+  double fraction_above_gate = 0.0;
+};
+
 struct KindSummary {
   std::uint64_t decoded = 0;
   std::uint64_t used = 0;
   std::map<std::string, std::uint64_t> rejected;  // ordered: deterministic output
+  std::optional<InnovationSummary> innovation;    // kinds the filter tried to fuse
+};
+
+// How the filter adapted itself (filter/control/innovation_adaptation.hpp).
+struct AdaptationSummary {
+  std::uint64_t covariance_inflations = 0;
+  double process_noise_scale = 1.0;  // at the end
+  double max_process_noise_scale = 1.0;
+  std::uint64_t gnss_recoveries = 0;  // re-anchored to GNSS after sustained rejection
 };
 
 struct RunStats {
@@ -42,6 +61,7 @@ struct Summary {
   std::vector<InputSummary> inputs;
   std::array<KindSummary, static_cast<std::size_t>(MeasurementKind::kCount)> kinds{};
   std::optional<RunStats> run;  // absent for `decode`
+  std::optional<AdaptationSummary> adaptation;  // absent for `decode`
   int interrupted_by = 0;       // the signal that stopped the run early (0: ran to the end)
   // Extra top-level sections (e.g. accuracy against truth) added by commands.
   nlohmann::ordered_json extra = nlohmann::ordered_json::object();
@@ -49,6 +69,9 @@ struct Summary {
   KindSummary& kind(MeasurementKind k) { return kinds[static_cast<std::size_t>(k)]; }
   nlohmann::ordered_json to_json(bool decode_only) const;
   void print(std::ostream& os, bool decode_only) const;
+
+ private:
+  void print_innovations(std::ostream& os) const;
 };
 
 // Writes JSON to `path` as an OutputFile (apps/output/output_file.hpp: a regular file appears

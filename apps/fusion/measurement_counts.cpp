@@ -21,7 +21,13 @@ void fill_measurement_counts(const filter::FilterStats& stats, const Measurement
     // A kind the filter does not fuse (device solutions, magnetometer...): "ignored".
     if (fs.ignored > 0) ks.rejected["ignored"] += fs.ignored;
     for (const auto& [reason, n] : counts.gated[k]) ks.rejected[reason] += n;
+    if (fs.innovation.count > 0) {
+      ks.innovation = InnovationSummary{fs.innovation.count, fs.innovation.mean_nis(),
+                                        fs.innovation.mean_nis_per_dim(), fs.innovation.fraction_above_gate()};
+    }
   }
+  summary.adaptation = AdaptationSummary{stats.covariance_inflations, stats.process_noise_scale,
+                                         stats.max_process_noise_scale, stats.gnss_recoveries};
 }
 
 }  // namespace navfuse::apps

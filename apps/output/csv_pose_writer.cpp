@@ -1,8 +1,8 @@
 #include "apps/output/csv_pose_writer.hpp"
 
-#include <charconv>
 #include <cmath>
 
+#include "apps/output/csv_fields.hpp"
 #include "core/rotation/rotation.hpp"
 
 namespace navfuse::apps {
@@ -13,33 +13,8 @@ constexpr const char* kHeader =
     "pos_std_n_m,pos_std_e_m,pos_std_d_m,vel_std_n_mps,vel_std_e_mps,vel_std_d_mps,roll_std_deg,"
     "pitch_std_deg,yaw_std_deg\n";
 
-void append_fixed(std::string& row, double value, int decimals) {
-  row += ',';
-  if (!std::isfinite(value)) {
-    row += "nan";
-    return;
-  }
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed, decimals);
-  row.append(buf, r.ptr);
-}
-
-// Whole seconds and nanoseconds separately: a double cannot hold GPS ns exactly.
-void append_time(std::string& row, std::int64_t time_ns) {
-  char buf[40];
-  std::int64_t s = time_ns / 1'000'000'000;
-  std::int64_t ns = time_ns % 1'000'000'000;
-  if (ns < 0) {
-    ns += 1'000'000'000;
-    --s;
-  }
-  auto r = std::to_chars(buf, buf + sizeof buf, s);
-  row.append(buf, r.ptr);
-  row += '.';
-  char frac[9];
-  for (int i = 8; i >= 0; --i, ns /= 10) frac[i] = static_cast<char>('0' + ns % 10);
-  row.append(frac, 9);
-}
+using csv::append_fixed;
+using csv::append_time;
 
 }  // namespace
 

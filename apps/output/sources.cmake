@@ -6,6 +6,7 @@ target_sources(navfuse_apps PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/csv_pose_writer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/fe_epoch_encoder.cpp
   ${CMAKE_CURRENT_LIST_DIR}/fe_stream_rates.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/innovation_csv_writer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mip_epoch_encoder.cpp
   ${CMAKE_CURRENT_LIST_DIR}/nmea_epoch_encoder.cpp
   ${CMAKE_CURRENT_LIST_DIR}/output_file.cpp

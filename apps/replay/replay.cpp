@@ -11,6 +11,7 @@
 #include "apps/common/recording_format.hpp"
 #include "apps/lcm/lcm_pose_writer.hpp"
 #include "apps/output/csv_pose_writer.hpp"
+#include "apps/output/innovation_csv_writer.hpp"
 #include "apps/output/encoded_file_writer.hpp"
 #include "apps/output/output_paths.hpp"
 #include "apps/output/pose_output_thread.hpp"
@@ -171,7 +172,7 @@ ReplayResult run_replay(const ReplayOptions& options) {
   if (!options.truth_path.empty()) input_paths.push_back(options.truth_path);
   check_output_paths(input_paths,
                      {{"--fe-out", options.fe_out}, {"--mip-out", options.mip_out}, {"--csv", options.csv_out},
-                      {"--nmea-out", options.nmea_out}});
+                      {"--nmea-out", options.nmea_out}, {"--innovations-csv", options.innovations_csv}});
   const MeasurementMerger::Options merge{.chunk_bytes = 16 * 1024, .allow_truncated = options.allow_truncated};
   MeasurementMerger merger = recording ? MeasurementMerger(*recording, merge) : MeasurementMerger(specs, merge);
   std::unique_ptr<TruthAccuracy> accuracy, forward_accuracy;
@@ -217,11 +218,17 @@ ReplayResult run_replay(const ReplayOptions& options) {
     }
     runner.engine().record_to(record.get());
   }
+  std::unique_ptr<InnovationCsvWriter> innovations;
+  if (!options.innovations_csv.empty()) {
+    innovations = std::make_unique<InnovationCsvWriter>(options.innovations_csv);
+    runner.engine().set_innovation_sink(&InnovationCsvWriter::sink, innovations.get());
+  }
   ReplayResult result;
   result.summary = fuse_log(merger, runner, observer,
                             {.progress_bar = options.progress, .interrupt = options.interrupt});
   if (record) smooth_record(*record, runner, filter_options, rate_hz, outages, outputs, accuracy.get(), result);
   outputs.commit();
+  if (innovations) innovations->commit();
 
   result.imu_samples = runner.imu_samples();
   if (!options.smooth) result.poses = runner.poses();

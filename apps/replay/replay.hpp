@@ -29,6 +29,7 @@ struct ReplayOptions {
   std::string recording_dir;
   std::optional<std::int32_t> gps_week;  // --gps-week: the week of imutxt inputs
   std::string fe_out, mip_out, csv_out, nmea_out;
+  std::string innovations_csv;  // --innovations-csv
   std::string truth_path;
   std::optional<std::string> lcm_url;  // --lcm [URL]: NAVFUSE_POSE / NAVFUSE_IMU at the pose rate ("" = LCM's default)
   std::optional<double> output_rate_hz;  // overrides the config's output.rate_hz

@@ -86,6 +86,8 @@ void add_fusion_command(CLI::App& root, int& exit_code, const char* name, const 
   sub->add_option("--mip-out", o.mip_out, "Write MIP filter (0x82) packets to this file");
   sub->add_option("--csv", o.csv_out, "Write one CSV row per pose to this file");
   sub->add_option("--nmea-out", o.nmea_out, "Write NMEA GGA/RMC/HDT sentences (at most 10 Hz) to this file");
+  sub->add_option("--innovations-csv", o.innovations_csv,
+                  "Write one CSV row per aiding measurement: result, NIS, residuals and their predicted std");
   args->lcm = sub->add_option("--lcm", args->lcm_url,
                               "Publish NAVFUSE_POSE and NAVFUSE_IMU at the pose rate on LCM [URL]")
                    ->expected(0, 1);

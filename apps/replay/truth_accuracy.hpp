@@ -12,8 +12,10 @@
 // GNSS antenna (rtklib) with the solution moved to the antenna by gnss.lever_arm_m (position
 // + C_nb l, velocity + C_nb (w x l)), so the lever arm is not counted as error.
 // When: a dense reference is interpolated at every pose; a sparse one (rtklib) is compared at
-// each of its epochs, with the solution interpolated between the two poses around it (at most
-// kMaxPoseGapNs apart; 10 ms at 100 Hz moves a walker 1.5 cm, interpolated to well under 1 mm).
+// each of its epochs with the first navigation pose at or after it (at most kMaxPoseGapNs later),
+// moved back along its velocity: the estimate that includes what was measured at the epoch, as
+// filters that update at GNSS epochs (KF-GINS) report it. Interpolating from the pose before
+// would score the prediction, not the estimate.
 #pragma once
 
 #include <array>

@@ -25,7 +25,7 @@ std::optional<DeviceProfile> device_profile_from_string(std::string_view name);
 // (core/config/platform.cpp). land: non-holonomic constraint, wheel speed, zero-velocity updates;
 // pedestrian (walked or handheld): zero-velocity and zero-rate updates at stops, no NHC;
 // airborne, marine: neither (an aircraft or a boat at "rest" still moves with air or water).
-enum class Platform { kLand, kPedestrian, kAirborne, kMarine };
+enum class Platform { kGeneric, kLand, kPedestrian, kAirborne, kMarine };
 std::string_view to_string(Platform p);
 std::optional<Platform> platform_from_string(std::string_view name);
 
@@ -41,11 +41,21 @@ struct ImuConfig {
   double accel_bias_corr_time_s = 300;
   double initial_gyro_bias_std_deg_hr = 20;
   double initial_accel_bias_std_mps2 = 0.01;
+  double time_offset_s = 0.0;  // added to IMU timestamps to put them on the GNSS time base
 };
 
 struct GnssConfig {
   Vec3 lever_arm_m{0, 0, 0};            // primary antenna, vehicle frame
   Vec3 secondary_lever_arm_m{0, 0, 0};  // dual-antenna heading, if any
+  double time_offset_s = 0.0;           // added to GNSS timestamps (receiver latency, s)
+  // Multipliers on the receiver's own position std devs, per fix type (its std devs are often
+  // optimistic for some fix types: RTK float, single point); velocity std devs have one.
+  double std_scale_rtk_fixed = 1.0;
+  double std_scale_rtk_float = 1.0;
+  double std_scale_ppp = 1.0;
+  double std_scale_dgnss = 1.0;   // DGNSS and SBAS
+  double std_scale_single = 1.0;  // 2-D and 3-D single point
+  double velocity_std_scale = 1.0;
 };
 
 struct WheelConfig {
@@ -57,6 +67,7 @@ struct WheelConfig {
   double m_per_tick = 0.0;
   // Prior 1-sigma of the odometer scale error (fraction; 0.02 = 2 %); 0: not estimated.
   double initial_scale_std = 0.02;
+  double time_offset_s = 0.0;  // added to wheel speed / tick timestamps (s)
 };
 
 // Heading initialisation. Unset (nullopt, `~` in YAML) means "the platform's default" or "none".
@@ -67,6 +78,13 @@ struct AlignmentConfig {
   std::optional<double> initial_heading_deg;  // known heading at start (deg from north)
 };
 
+// Innovation-based adaptation (filter/control/innovation_adaptation.hpp).
+struct AdaptationConfig {
+  double window_s = 1.0;                   // innovations looked at for "persistently"
+  double inflate_ratio = 3.0;              // median NIS per dimension that re-inflates P
+  double max_process_noise_scale = 100.0;  // 1: data-sheet noise only, no adaptation of Q
+};
+
 struct OutputConfig {
   double rate_hz = 100;  // pose output rate (0 = every IMU sample)
 };
@@ -75,11 +93,12 @@ struct OutputConfig {
 // actually starts from are defaults_for(profile) (core/config/device_profiles.cpp).
 struct Config {
   DeviceProfile device = DeviceProfile::kGeneric;
-  Platform platform = Platform::kLand;
+  Platform platform = Platform::kGeneric;
   ImuConfig imu;
   GnssConfig gnss;
   WheelConfig wheel;
   AlignmentConfig alignment;
+  AdaptationConfig adaptation;
   OutputConfig output;
 };
 

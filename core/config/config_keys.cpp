@@ -38,10 +38,20 @@ constexpr ValueRange kAny{-kInf, kInf};
 constexpr ValueRange kTickDistanceM{0.0, 10.0};
 // An odometer scale off by more than half is not an odometer the filter should calibrate.
 constexpr ValueRange kScaleStd{0.0, 0.5};
+// Time offsets between inputs: a few hundred ms of latency is common (USB, filtering, RTK
+// processing); beyond 10 s the two clocks are not the same time base at all.
+constexpr ValueRange kTimeOffsetS{-10.0, 10.0};
+// Std-dev multipliers: above 0 (0 would claim a perfect measurement), at most 1000 (beyond it the
+// measurement carries no information: leave it out instead).
+constexpr ValueRange kStdScale{0.0, 1000.0, true};
+// Adaptation: a window of 0.1-60 s (one GNSS epoch at 10 Hz to a minute); variance ratios from 1
+// (no change) to 1e6 (std x 1000).
+constexpr ValueRange kAdaptationWindowS{0.1, 60.0};
+constexpr ValueRange kRatio{1.0, 1e6};
 
 const KeyBinding kKeys[] = {
     NAVFUSE_CONFIG_KEY(platform, kAny,
-                       "land | pedestrian | airborne | marine: which motion constraints apply"),
+                       "generic | land | pedestrian | airborne | marine: which motion constraints apply"),
     NAVFUSE_CONFIG_KEY(imu.mounting_rpy_deg, kAngleDeg,
                        "sensor -> vehicle roll, pitch, yaw (deg, 3-2-1)"),
     NAVFUSE_CONFIG_KEY(imu.gyro_arw_deg_rthr, kPositive, "gyro angle random walk (deg/sqrt(h))"),
@@ -59,10 +69,20 @@ const KeyBinding kKeys[] = {
                        "turn-on gyro bias uncertainty, 1 sigma (deg/h)"),
     NAVFUSE_CONFIG_KEY(imu.initial_accel_bias_std_mps2, kAccelBiasStdMps2,
                        "turn-on accel bias uncertainty, 1 sigma (m/s^2)"),
+    NAVFUSE_CONFIG_KEY(imu.time_offset_s, kTimeOffsetS,
+                       "added to IMU timestamps to put them on GNSS time (s; -0.125: IMU stamps 125 ms late)"),
     NAVFUSE_CONFIG_KEY(gnss.lever_arm_m, kLeverArmM, "primary antenna, vehicle frame FRD (m)"),
     NAVFUSE_CONFIG_KEY(gnss.secondary_lever_arm_m, kLeverArmM,
                        "secondary antenna: dual-antenna heading baseline, and where the fixes of "
                        "receiver 2 (GNSS2, receiver_id 1) are measured; vehicle frame FRD (m)"),
+    NAVFUSE_CONFIG_KEY(gnss.time_offset_s, kTimeOffsetS,
+                       "added to GNSS timestamps (s; -0.1: fixes stamped 100 ms after their epoch)"),
+    NAVFUSE_CONFIG_KEY(gnss.std_scale_rtk_fixed, kStdScale, "multiplier on RTK-fixed position std devs"),
+    NAVFUSE_CONFIG_KEY(gnss.std_scale_rtk_float, kStdScale, "multiplier on RTK-float position std devs"),
+    NAVFUSE_CONFIG_KEY(gnss.std_scale_ppp, kStdScale, "multiplier on PPP position std devs"),
+    NAVFUSE_CONFIG_KEY(gnss.std_scale_dgnss, kStdScale, "multiplier on DGNSS/SBAS position std devs"),
+    NAVFUSE_CONFIG_KEY(gnss.std_scale_single, kStdScale, "multiplier on single-point position std devs"),
+    NAVFUSE_CONFIG_KEY(gnss.velocity_std_scale, kStdScale, "multiplier on GNSS velocity std devs"),
     NAVFUSE_CONFIG_KEY(wheel.lever_arm_m, kLeverArmM,
                        "speed measurement point (e.g. rear axle centre), vehicle frame FRD (m)"),
     NAVFUSE_CONFIG_KEY(wheel.speed_std_mps, kPositive, "wheel speed noise, 1 sigma (m/s)"),
@@ -71,10 +91,17 @@ const KeyBinding kKeys[] = {
                        "(m; 0: ticks not fused)"),
     NAVFUSE_CONFIG_KEY(wheel.initial_scale_std, kScaleStd,
                        "odometer scale error prior, 1 sigma (fraction; 0: scale not estimated)"),
+    NAVFUSE_CONFIG_KEY(wheel.time_offset_s, kTimeOffsetS, "added to wheel speed and tick timestamps (s)"),
     NAVFUSE_CONFIG_KEY(alignment.min_speed_mps, kSpeedMps,
                        "GNSS speed for heading from course (m/s; ~: 2, pedestrian 0.5)"),
     NAVFUSE_CONFIG_KEY(alignment.initial_heading_deg, kAngleDeg,
                        "known heading at start (deg from north; ~: align by itself)"),
+    NAVFUSE_CONFIG_KEY(adaptation.window_s, kAdaptationWindowS,
+                       "innovations within this span decide that the filter is overconfident (s)"),
+    NAVFUSE_CONFIG_KEY(adaptation.inflate_ratio, kRatio,
+                       "median NIS per dimension that re-inflates P (3: innovations 1.7x their std)"),
+    NAVFUSE_CONFIG_KEY(adaptation.max_process_noise_scale, kRatio,
+                       "largest multiplier on the IMU noise variances (1: data sheet only)"),
     NAVFUSE_CONFIG_KEY(output.rate_hz, kNonNegative, "pose output rate (Hz, 0 = every IMU sample)"),
 };
 

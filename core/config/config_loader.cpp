@@ -194,7 +194,7 @@ class Loader {
       const auto p = node.IsScalar() ? platform_from_string(node.Scalar()) : std::nullopt;
       if (!p) {
         fail(node, binding.key,
-             "expected one of land, pedestrian, airborne, marine, got " + describe(node));
+             "expected one of generic, land, pedestrian, airborne, marine, got " + describe(node));
       }
       *(*platform)(config) = *p;
       return;

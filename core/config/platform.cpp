@@ -7,6 +7,7 @@ namespace navfuse::config {
 namespace {
 
 constexpr EnumName<Platform> kNames[] = {
+    {Platform::kGeneric, "generic"},
     {Platform::kLand, "land"},
     {Platform::kPedestrian, "pedestrian"},
     {Platform::kAirborne, "airborne"},
@@ -15,7 +16,7 @@ constexpr EnumName<Platform> kNames[] = {
 
 }  // namespace
 
-std::string_view to_string(Platform p) { return name_in<Platform>(kNames, p, "land"); }
+std::string_view to_string(Platform p) { return name_in<Platform>(kNames, p, "generic"); }
 
 std::optional<Platform> platform_from_string(std::string_view name) {
   return value_in<Platform>(kNames, name);

@@ -1,6 +1,10 @@
 #include "filter/control/gnss_control.hpp"
 
 #include <cmath>
+#include <optional>
+#include <utility>
+
+#include "core/rotation/rotation.hpp"
 
 #include "core/rotation/rotation.hpp"
 #include "filter/alignment.hpp"
@@ -48,8 +52,11 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
     return FuseResult::ok();
   }
 
-  const Observation obs = gnss_position_observation(
+  Observation obs = gnss_position_observation(
       c.view(shift_s), m, antenna_of_receiver(c.x, o.gnss_secondary_lever_arm_m, m.receiver_id));
+  const double std_scale = o.gnss_position_std_scale_for(m.fix);
+  obs.r *= std_scale * std_scale;
+  adapt_to_innovation(c, o, c.adaptation.position, obs, now);
   const FuseResult r = c.apply(o, obs, c.gate_for(o, obs.rows()));
   if (r.used) {
     c.gnss.last_position_ns = now;
@@ -82,28 +89,41 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssVelocity& m,
   c.gnss.last_speed_mps = speed;
   c.gnss.last_speed_ns = now;
   if (!c.mode.levelled) return FuseResult::reject(RejectReason::kNotAligned);
-  const Eigen::Matrix3d cov = (m.header.valid & GnssVelocity::kValidCovariance) != 0
-                                  ? m.cov_ned_m2ps2
-                                  : Eigen::Matrix3d(Eigen::Vector3d(0.01, 0.01, 0.04).asDiagonal());
-  const double course_std = std::sqrt(0.5 * (cov(0, 0) + cov(1, 1))) / speed;
+  const Eigen::Matrix3d cov = o.gnss_velocity_std_scale * o.gnss_velocity_std_scale *
+                              ((m.header.valid & GnssVelocity::kValidCovariance) != 0
+                                   ? m.cov_ned_m2ps2
+                                   : Eigen::Matrix3d(Eigen::Vector3d(0.01, 0.01, 0.04).asDiagonal()));
+  const double vel_var = 0.5 * (cov(0, 0) + cov(1, 1));
+  const double course_std = std::sqrt(vel_var) / speed;
   // A baseline found wrong: the heading it gave is not known after all; re-align from the course
   // below, at this epoch (the vehicle is moving fast enough, or it would not have been checked).
   if (c.mode.heading_known && check_baseline(c, o, m, course_std)) c.mode.heading_known = false;
   if (!c.mode.heading_known) {
     // At rest the zero-velocity updates know the velocity better than GNSS, and a reset would
-    // cut the velocity-tilt correlation that keeps the levelling honest.
+    // cut the velocity-tilt correlation that keeps the levelling honest. The velocity-matching
+    // window starts again at every rest: only the motion after it carries heading information.
     if (c.stationary.stationary && speed < o.stationary_max_speed_mps) {
+      restart_velocity_match(c.velocity_match, c.x.time_ns, m.vel_ned_mps.head<2>());
       return FuseResult::reject(RejectReason::kNotAligned);
     }
     c.x.vel_ned_mps = m.vel_ned_mps;
     c.ekf.reset_states(sx::kVel, cov);
     c.gnss.last_velocity_ns = now;
-    // Kinematic alignment (MIP §6.4): a vehicle or walker moving forward points along its
-    // course. The course noise is the horizontal velocity std over the speed; the yaw
-    // uncertainty adds an allowance for sideslip and mounting.
-    if (speed >= o.kinematic_alignment_speed_mps && course_std <= o.kinematic_max_course_std_rad) {
-      set_heading(c, std::atan2(m.vel_ned_mps.y(), m.vel_ned_mps.x()),
-                  std::hypot(course_std, o.kinematic_heading_std_rad));
+    std::optional<std::pair<double, double>> heading;  // yaw, std
+    if (auto fit = add_velocity_match(c.velocity_match, o, c.x.time_ns, m.vel_ned_mps.head<2>(), vel_var)) {
+      const double yaw = rot::rpy_from_quat(c.x.q_nb).z() + fit->rotation_rad;
+      heading.emplace(rot::wrap_pi(yaw), std::hypot(fit->std_rad, o.velocity_match_allowance_rad));
+    }
+    // Kinematic alignment (MIP §6.4): a land vehicle moving forward points along its course.
+    // The course noise is the horizontal velocity std over the speed; the yaw uncertainty adds
+    // an allowance for sideslip and mounting.
+    if (!heading && o.course_alignment && speed >= o.kinematic_alignment_speed_mps &&
+        course_std <= o.kinematic_max_course_std_rad) {
+      heading.emplace(std::atan2(m.vel_ned_mps.y(), m.vel_ned_mps.x()),
+                      std::hypot(course_std, o.kinematic_heading_std_rad));
+    }
+    if (heading) {
+      set_heading(c, heading->first, heading->second);
       if (c.gnss.have_fix &&
           std::abs(seconds_since(c.x.time_ns, c.gnss.latest_fix.header.time_ns)) < kMaxPlacementAge_s) {
         place_at_fix(c, o, c.gnss.latest_fix);
@@ -115,6 +135,7 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssVelocity& m,
   Observation obs = gnss_velocity_observation(
       c.view(shift_s), m, antenna_of_receiver(c.x, o.gnss_secondary_lever_arm_m, m.receiver_id));
   obs.r = cov;
+  adapt_to_innovation(c, o, c.adaptation.velocity, obs, now);
   const FuseResult r = c.apply(o, obs, c.gate_for(o, obs.rows()));
   if (r.used) {
     c.gnss.last_velocity_ns = now;

@@ -55,12 +55,18 @@ void update_stationary(FilterCore& c, const FilterOptions& o, const ImuIncrement
   if (c.apply(o, zero_velocity_observation(c.view(0.0), o.zupt_std_mps), o.chi2_gate[2]).used) {
     ++c.mode.zupts;
   }
-  if (c.mode.heading_known) {
-    // The window mean of white rate noise has std ARW / sqrt(T); the bias random walk within the
-    // window is negligible next to it.
-    const double std_rps = o.imu.gyro_arw_rad_rts / std::sqrt(t);
-    c.apply(o, zero_rate_observation(c.view(0.0), mean_raw_rate, std_rps), o.chi2_gate[2]);
+  // The window mean of white rate noise has std ARW / sqrt(T); the bias random walk within the
+  // window is negligible next to it.
+  double std_rps = o.imu.gyro_arw_rad_rts / std::sqrt(t);
+  if (!c.mode.heading_known) {
+    // Before the heading is known the horizontal earth rate's direction in the body is unknown
+    // (its magnitude, w_ie cos(lat), is not): count it as noise, so the gyro biases still settle
+    // to ~15 deg/h at the first stop instead of waiting for a heading (MEMS turn-on biases are
+    // hundreds of deg/h, enough to tilt the levelling by a degree in ten seconds).
+    const double horizontal_earth_rate = c.earth.earth_rate_ned_rps.head<2>().norm();
+    std_rps = std::hypot(std_rps, horizontal_earth_rate);
   }
+  c.apply(o, zero_rate_observation(c.view(0.0), mean_raw_rate, std_rps), o.chi2_gate[2]);
 }
 
 }  // namespace navfuse::filter

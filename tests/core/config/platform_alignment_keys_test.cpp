@@ -12,9 +12,10 @@ namespace {
 
 using test::error_of;
 
-TEST(PlatformKey, DefaultsToLandAndParsesEveryName) {
-  EXPECT_EQ(load_from_string("device: cv7\n").platform, Platform::kLand);
-  EXPECT_EQ(defaults_for(DeviceProfile::kGeneric).platform, Platform::kLand);
+TEST(PlatformKey, DefaultsToGenericAndParsesEveryName) {
+  EXPECT_EQ(load_from_string("device: cv7\n").platform, Platform::kGeneric);
+  EXPECT_EQ(defaults_for(DeviceProfile::kGeneric).platform, Platform::kGeneric);
+  EXPECT_EQ(load_from_string("platform: generic\n").platform, Platform::kGeneric);
   EXPECT_EQ(load_from_string("platform: land\n").platform, Platform::kLand);
   EXPECT_EQ(load_from_string("platform: pedestrian\n").platform, Platform::kPedestrian);
   EXPECT_EQ(load_from_string("platform: Airborne\n").platform, Platform::kAirborne);
@@ -23,7 +24,7 @@ TEST(PlatformKey, DefaultsToLandAndParsesEveryName) {
 
 TEST(PlatformKey, UnknownOrWrongTypeNamesTheKey) {
   EXPECT_EQ(error_of("platform: walking\n"),
-            "config.yaml: platform: expected one of land, pedestrian, airborne, marine, got "
+            "config.yaml: platform: expected one of generic, land, pedestrian, airborne, marine, got "
             "\"walking\" (line 1)");
   EXPECT_NE(error_of("platform: [land]\n").find("platform: expected one of"), std::string::npos);
   EXPECT_NE(error_of("platform:\n").find("platform: expected one of"), std::string::npos);
