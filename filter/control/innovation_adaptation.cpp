@@ -14,16 +14,24 @@ void InnovationWindow::push(const Sample& s) {
 }
 
 std::optional<InnovationWindow::Medians> InnovationWindow::recent_medians(std::int64_t now_ns, double window_s,
-                                                                          int min_samples) const {
+                                                                          int min_samples, double large_nis) const {
   std::array<double, kCapacity> nis{};
   std::array<double, kCapacity> lambda{};
-  int n = 0;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();  // over the large residuals only
+  double sum_sq = 0.0;
+  int n = 0, large = 0;
   for (int i = 0; i < count; ++i) {
     const Sample& s = samples[static_cast<std::size_t>(i)];
     const double age_s = static_cast<double>(now_ns - s.time_ns) * 1e-9;
     if (age_s < 0.0 || age_s > window_s) continue;
     nis[static_cast<std::size_t>(n)] = s.nis_per_dim;
     lambda[static_cast<std::size_t>(n)] = s.lambda;
+    if (s.nis_per_dim >= large_nis) {
+      const Eigen::Vector3d r(s.residual[0], s.residual[1], s.residual[2]);
+      sum += r;
+      sum_sq += r.squaredNorm();
+      ++large;
+    }
     ++n;
   }
   if (n < std::max(min_samples, 1)) return std::nullopt;
@@ -33,7 +41,12 @@ std::optional<InnovationWindow::Medians> InnovationWindow::recent_medians(std::i
     std::nth_element(v.begin(), mid, v.begin() + n);
     return *mid;
   };
-  return Medians{median(nis), median(lambda)};
+  bool agree = false;
+  if (large > 0) {
+    const Eigen::Vector3d mean = sum / large;
+    agree = mean.squaredNorm() > std::max(0.0, sum_sq / large - mean.squaredNorm());
+  }
+  return Medians{median(nis), median(lambda), agree};
 }
 
 InnovationWindow::Sample innovation_sample(const Ekf& ekf, const Observation& obs, std::int64_t t_ns) {
@@ -47,6 +60,7 @@ InnovationWindow::Sample innovation_sample(const Ekf& ekf, const Observation& ob
   InnovationWindow::Sample s;
   s.time_ns = t_ns;
   s.nis_per_dim = ekf.nis(obs) / obs.rows();
+  for (int i = 0; i < obs.rows(); ++i) s.residual[static_cast<std::size_t>(i)] = obs.residual(i);
   s.lambda = spread > 0.0 ? (obs.residual.squaredNorm() - obs.r.trace()) / spread : 0.0;
   return s;
 }
@@ -59,7 +73,7 @@ void adapt_to_innovation(FilterCore& c, const FilterOptions& o, InnovationWindow
   const InnovationWindow::Sample sample = innovation_sample(c.ekf, obs, now_ns);
   if (!std::isfinite(sample.nis_per_dim) || !std::isfinite(sample.lambda)) return;
   window.push(sample);
-  const auto medians = window.recent_medians(now_ns, a.window_s, a.min_samples);
+  const auto medians = window.recent_medians(now_ns, a.window_s, a.min_samples, a.inflate_ratio);
   if (!medians) return;
 
   // Process noise grows only on evidence, innovations above their predicted spread (median
@@ -73,7 +87,7 @@ void adapt_to_innovation(FilterCore& c, const FilterOptions& o, InnovationWindow
   c.adaptation.max_process_noise_scale =
       std::max(c.adaptation.max_process_noise_scale, c.adaptation.process_noise_scale);
 
-  if (medians->nis_per_dim < a.inflate_ratio || medians->lambda <= 1.0) return;
+  if (medians->nis_per_dim < a.inflate_ratio || medians->lambda <= 1.0 || !medians->residuals_agree) return;
   const double scale = std::sqrt(std::min(medians->lambda, a.max_inflation));
   // Position and velocity only: they are what the aid observes directly. Inflating attitude too
   // would throw away a heading that GNSS rebuilds only slowly (through accelerations), and an

@@ -18,7 +18,9 @@
 //   `window_s` is above `inflate_ratio` with at least `min_samples` samples (innovations
 //   persistently 1.7x their predicted std or more), the position and velocity block of P is
 //   scaled by the median lambda (correlations kept: P <- D P D), the window is cleared and the
-//   measurement is then gated against the honest covariance. A single outlier never triggers it.
+//   measurement is then gated against the honest covariance. A single outlier never triggers it,
+//   nor a cluster of glitches: the recent residuals must also agree with each other (their mean
+//   larger than their scatter), as they do when the filter has drifted off a healthy stream.
 // - Process noise scaling (Ding et al. 2007 §3): the velocity and attitude random walks are
 //   multiplied by `process_noise_scale`: up by the median lambda when the median NIS / m says
 //   the innovations exceed their predicted spread, down when they fall short, never below 1 (the
@@ -45,6 +47,7 @@ struct InnovationWindow {
     std::int64_t time_ns = 0;
     double nis_per_dim = 0.0;
     double lambda = 0.0;
+    std::array<double, 3> residual{};  // zero-padded beyond the measurement's rows
   };
   std::array<Sample, kCapacity> samples{};
   int count = 0;
@@ -57,8 +60,13 @@ struct InnovationWindow {
   struct Medians {
     double nis_per_dim = 0.0;
     double lambda = 0.0;
+    // The recent large residuals (NIS / m >= large_nis) agree: their mean is larger than their
+    // scatter about it. A filter that drifted off a healthy stream sees one offset; GNSS
+    // glitches point anywhere.
+    bool residuals_agree = false;
   };
-  std::optional<Medians> recent_medians(std::int64_t now_ns, double window_s, int min_samples) const;
+  std::optional<Medians> recent_medians(std::int64_t now_ns, double window_s, int min_samples,
+                                        double large_nis = 1.0) const;
 };
 
 struct AdaptationState {

@@ -3,6 +3,7 @@
 // is still rejected and changes nothing; the window's median ignores single samples.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -20,7 +21,7 @@ const Eigen::Vector3d kRpy = Eigen::Vector3d(1.0, -2.0, 60.0) * rot::kDegToRad;
 TEST(InnovationWindow, MedianOfRecentSamplesOnly) {
   InnovationWindow w;
   const std::int64_t s = 1'000'000'000;
-  auto push = [&w](std::int64_t t, double v) { w.push({t, v, 10.0 * v}); };
+  auto push = [&w](std::int64_t t, double v) { w.push({t, v, 10.0 * v, {v, 0.0, 0.0}}); };
   EXPECT_FALSE(w.recent_medians(0, 1.0, 1));
   push(0, 100.0);  // old
   push(2 * s, 1.0);
@@ -34,6 +35,20 @@ TEST(InnovationWindow, MedianOfRecentSamplesOnly) {
   for (int i = 0; i < 40; ++i) push(3 * s + i, 7.0);       // wraps the fixed capacity
   EXPECT_EQ(w.count, InnovationWindow::kCapacity);
   EXPECT_DOUBLE_EQ(w.recent_medians(3 * s + 40, 1.0, 3)->nis_per_dim, 7.0);
+}
+
+TEST(InnovationWindow, LargeResidualsMustAgree) {
+  const std::int64_t s = 1'000'000'000;
+  InnovationWindow drift, glitches;
+  for (int i = 0; i < 4; ++i) {
+    // One offset growing north (a filter drifting off a healthy stream) ...
+    drift.push({i * s / 4, 9.0, 9.0, {0.3 + 0.05 * i, 0.02 * (i % 2), 0.0}});
+    // ... against 50 m glitches in four directions.
+    const double a = 1.5707963267948966 * i;
+    glitches.push({i * s / 4, 900.0, 900.0, {50.0 * std::cos(a), 50.0 * std::sin(a), 0.0}});
+  }
+  EXPECT_TRUE(drift.recent_medians(s, 1.0, 3, 3.0)->residuals_agree);
+  EXPECT_FALSE(glitches.recent_medians(s, 1.0, 3, 3.0)->residuals_agree);
 }
 
 // Standing still with a known heading, RTK-like fixes (2 cm) at 5 Hz for 30 s; from 20 s on the

@@ -37,9 +37,13 @@ DriveResult run_drive(config::Platform platform) {
 
 TEST(PlatformConstraints, OptionsFollowThePlatform) {
   config::Config c;
-  EXPECT_TRUE(options_from_config(c).land_vehicle);  // default: land, today's behaviour
+  EXPECT_FALSE(options_from_config(c).land_vehicle);  // default: generic, no motion assumptions
+  EXPECT_FALSE(options_from_config(c).course_alignment);
   EXPECT_TRUE(options_from_config(c).zero_velocity_updates);
   EXPECT_EQ(options_from_config(c).kinematic_alignment_speed_mps, 2.0);
+  c.platform = config::Platform::kLand;
+  EXPECT_TRUE(options_from_config(c).land_vehicle);
+  EXPECT_TRUE(options_from_config(c).course_alignment);
   c.platform = config::Platform::kPedestrian;
   EXPECT_FALSE(options_from_config(c).land_vehicle);
   EXPECT_TRUE(options_from_config(c).zero_velocity_updates);
