@@ -10,6 +10,7 @@
 #include "apps/fusion/log_fusion.hpp"
 #include "apps/fusion/measurement_merger.hpp"
 #include "apps/replay/replay.hpp"
+#include "apps/replay/smoothed_pass.hpp"
 #include "apps/output/output_rate.hpp"
 #include "filter/engine.hpp"
 #include "filter/smoother/forward_record.hpp"
@@ -95,14 +96,7 @@ BenchLog collect_bench_log(const BenchLogOptions& options) {
                       {.output_rate_hz = config.output.rate_hz, .solutions = FusionRunner::Solutions::kPoses, .gnss_outages = {}},
                       observer);
   std::unique_ptr<filter::ForwardRecorder> record;
-  if (options.smooth) {
-    try {
-      record = std::make_unique<filter::ForwardRecorder>();
-    } catch (const std::runtime_error& e) {
-      throw CommandError(e.what());
-    }
-    runner.engine().record_to(record.get());
-  }
+  if (options.smooth) record = record_forward_pass(runner.engine());
   log.summary = fuse_log(
       merger, runner, observer,
       {.progress_bar = options.progress, .progress_lines_label = options.progress ? "navfuse bench" : nullptr});

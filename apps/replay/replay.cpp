@@ -210,14 +210,7 @@ ReplayResult run_replay(const ReplayOptions& options) {
                       observer);
   if (outages) observer.score_outages(*outages, runner);
   std::unique_ptr<filter::ForwardRecorder> record;
-  if (options.smooth) {
-    try {
-      record = std::make_unique<filter::ForwardRecorder>();
-    } catch (const std::runtime_error& e) {
-      throw CommandError(e.what());
-    }
-    runner.engine().record_to(record.get());
-  }
+  if (options.smooth) record = record_forward_pass(runner.engine());
   std::unique_ptr<InnovationCsvWriter> innovations;
   if (!options.innovations_csv.empty()) {
     innovations = std::make_unique<InnovationCsvWriter>(options.innovations_csv);

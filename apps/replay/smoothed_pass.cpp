@@ -1,5 +1,7 @@
 #include "apps/replay/smoothed_pass.hpp"
 
+#include <stdexcept>
+
 #include <chrono>
 #include <optional>
 
@@ -8,6 +10,17 @@
 #include "apps/output/pose_output_thread.hpp"
 
 namespace navfuse::apps {
+
+std::unique_ptr<filter::ForwardRecorder> record_forward_pass(filter::Engine& engine) {
+  std::unique_ptr<filter::ForwardRecorder> record;
+  try {
+    record = std::make_unique<filter::ForwardRecorder>();
+  } catch (const std::runtime_error& e) {
+    throw CommandError(e.what());
+  }
+  engine.record_to(record.get());
+  return record;
+}
 
 SmoothedPassResult write_smoothed(filter::ForwardRecorder& record, const filter::FilterOptions& options,
                                   TimeSource time_source, double rate_hz, PoseOutputs& outputs,

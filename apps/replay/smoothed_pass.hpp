@@ -5,10 +5,12 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 
 #include "apps/output/pose_outputs.hpp"
 #include "apps/replay/truth_accuracy.hpp"
 #include "core/measurements/measurements.hpp"
+#include "filter/engine.hpp"
 #include "filter/filter_options.hpp"
 #include "filter/smoother/forward_record.hpp"
 #include "filter/smoother/rts_smoother.hpp"
@@ -20,6 +22,11 @@ struct SmoothedPassResult {
   std::uint64_t poses = 0;
   double wall_s = 0.0;
 };
+
+// Starts recording `engine`'s forward pass for the smoother (replay --smooth, bench --reference
+// smoothed); the recorder must outlive the run. Throws CommandError when its temporary file
+// cannot be made.
+std::unique_ptr<filter::ForwardRecorder> record_forward_pass(filter::Engine& engine);
 
 // Throws CommandError when the record cannot be read back or an output fails.
 SmoothedPassResult write_smoothed(filter::ForwardRecorder& record, const filter::FilterOptions& options,
