@@ -80,7 +80,11 @@ void adapt_to_innovation(FilterCore& c, const FilterOptions& o, InnovationWindow
   // NIS / m > 1), and then by what the covariance ratio asks (up to 4^gain per sample); it
   // shrinks when the innovations fall short (NIS / m < 1). lambda alone is no evidence: when the
   // state spread is tiny next to R it is the difference of two noisy numbers over a small one.
-  const double ratio = medians->nis_per_dim > 1.0 ? std::max(medians->lambda, 1.0) : medians->nis_per_dim;
+  // Never faster than NIS / m itself says: when P is small next to R a NIS / m of 1.2 (common
+  // by chance) can come with a lambda of 50.
+  const double ratio = medians->nis_per_dim > 1.0
+                           ? std::clamp(medians->lambda, 1.0, medians->nis_per_dim)
+                           : medians->nis_per_dim;
   const double step = std::pow(std::clamp(ratio, 0.25, 4.0), a.process_noise_gain);
   c.adaptation.process_noise_scale =
       std::clamp(c.adaptation.process_noise_scale * step, 1.0, a.max_process_noise_scale);
