@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "apps/common/command_error.hpp"
+#include "apps/common/empty_run.hpp"
 #include "apps/common/input_spec.hpp"
 #include "apps/fusion/fusion_runner.hpp"
 #include "apps/fusion/log_fusion.hpp"
@@ -76,9 +77,10 @@ BenchLog collect_bench_log(const BenchLogOptions& options) {
   FusionRunner runner(filter::options_from_config(config),
                       {.output_rate_hz = config.output.rate_hz, .solutions = FusionRunner::Solutions::kPoses, .gnss_outages = {}},
                       observer);
-  log.summary = fuse_log(
-      merger, runner, observer,
-      {.progress_bar = options.progress, .progress_lines_label = options.progress ? "navfuse bench" : nullptr});
+  log.summary = fuse_log(merger, runner, observer,
+                         {.progress_bar = options.progress,
+                          .progress_lines_label = options.progress ? "navfuse bench" : nullptr,
+                          .interrupt = options.interrupt});
   const std::optional<MeasurementHeader>& imu_header = runner.first_imu();
   const std::optional<MeasurementHeader>& device_header = observer.device_header;
   if (imu_header) {
@@ -87,11 +89,15 @@ BenchLog collect_bench_log(const BenchLogOptions& options) {
   }
   log.imu_samples = runner.imu_samples();
 
+  for (const InputSummary& in : log.summary.inputs) {
+    if (std::string reason = no_frame_reason(in); !reason.empty()) throw nothing_useful_error("bench", reason);
+  }
   if (!imu_header) {
     std::string names;
     for (std::size_t i = 0; i < specs.size(); ++i) names += (i ? ", " : "") + input_name(specs, i);
-    throw CommandError("no IMU samples in " + names +
-                       ": bench runs navfuse on the log's own IMU data (log the device's IMU output too)");
+    throw nothing_useful_error("bench", "no IMU samples in " + names +
+                                            ": bench runs navfuse on the log's own IMU data (log the device's IMU "
+                                            "output too)");
   }
   log.time_source = imu_header->time_source;
   if (device_header && !same_time_base(*device_header, *imu_header)) {

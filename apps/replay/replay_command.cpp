@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "apps/common/command_error.hpp"
+#include "apps/common/empty_run.hpp"
 #include "apps/common/interrupt_signals.hpp"
 #include "apps/common/gps_week_option.hpp"
 #include "apps/common/summary.hpp"
@@ -19,6 +20,7 @@ struct ReplayArgs {
   std::string lcm_url;
   CLI::Option* lcm = nullptr;
   bool quiet = false;
+  bool allow_empty = false;
 };
 
 int run(ReplayArgs& args) {
@@ -55,9 +57,9 @@ int run(ReplayArgs& args) {
   if (result.summary.interrupted_by != 0) {
     std::cerr << "navfuse: replay interrupted by signal " << result.summary.interrupted_by
               << ": outputs and summary cover the part processed\n";
-    return 128 + result.summary.interrupted_by;
+    return interrupted_exit_code(result.summary.interrupted_by);
   }
-  if (!result.failure.empty()) throw CommandError("replay produced nothing useful: " + result.failure, 2);
+  if (!result.failure.empty()) return nothing_useful("replay", result.failure, args.allow_empty);
   return 0;
 }
 
@@ -87,6 +89,7 @@ void add_replay_command(CLI::App& root, int& exit_code) {
   sub->add_option("--gnss-outage", o.gnss_outage,
                   "Withhold GNSS in windows PERIOD_S:DURATION_S[:START_S] from the first IMU sample (e.g. 30:10)");
   sub->add_flag("--allow-truncated", o.allow_truncated, "Replay an input whose last frame is cut off");
+  sub->add_flag("--allow-empty", args->allow_empty, kAllowEmptyHelp);
   sub->add_flag("-q,--quiet", args->quiet, "Print only errors");
   sub->callback([args, &exit_code] { exit_code = run(*args); });
 }
