@@ -24,6 +24,9 @@ constexpr std::size_t kStreamBufferBytes = 1 << 16;
 // One write(2) to a stream after poll(2) reported room: a pipe with room takes PIPE_BUF (4096 on
 // Linux, pipe(7)) bytes without blocking, so a stalled reader cannot block a write this size.
 constexpr std::size_t kStreamWriteBytes = 4096;
+// After Ctrl-C / SIGTERM, a reader that takes no byte for this long is taken as stalled (a
+// reader that is merely slow gets the rest of the complete frames).
+constexpr int kStalledReaderMs = 1000;
 
 bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
 
@@ -115,12 +118,17 @@ void OutputFile::flush_stream() {
       fail("write error", errno);
     }
     // Room (or an error that write() will name) goes first: after a signal, whatever the reader
-    // still takes is written; only a reader that takes nothing ends the output.
+    // still takes is written; only a reader that takes nothing for kStalledReaderMs ends the
+    // output.
     if (fds[0].revents == 0) {
-      const int signal_number = InterruptSignals::received().load(std::memory_order_relaxed);
-      throw CommandError("stopped writing '" + path_ + "' on signal " + std::to_string(signal_number) +
-                             ": its reader took no more data",
-                         interrupted_exit_code(signal_number));
+      const int ready = ::poll(fds, 1, kStalledReaderMs);
+      if (ready < 0) continue;  // another signal: look again
+      if (ready == 0) {
+        const int signal_number = InterruptSignals::received().load(std::memory_order_relaxed);
+        throw CommandError("stopped writing '" + path_ + "' on signal " + std::to_string(signal_number) +
+                               ": its reader took no more data",
+                           interrupted_exit_code(signal_number));
+      }
     }
     const ssize_t n = ::write(fd_, buffer_.data() + done, std::min(kStreamWriteBytes, buffered_ - done));
     if (n < 0) {
