@@ -131,6 +131,11 @@ void Engine::maybe_checkpoint(const ImuRecord& record) {
   entries_.erase(entries_.begin(), keep);
 }
 
+std::uint64_t Engine::pending(MeasurementKind kind) const {
+  return static_cast<std::uint64_t>(
+      std::count_if(entries_.begin(), entries_.end(), [kind](const Entry& e) { return !e.counted && kind_of(e.m) == kind; }));
+}
+
 void Engine::process_aiding(const Measurement& m) {
   const std::int64_t t = header_of(m).time_ns;
   const MeasurementKind kind = kind_of(m);

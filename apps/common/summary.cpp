@@ -30,6 +30,7 @@ nlohmann::ordered_json Summary::to_json(bool decode_only) const {
       e["used"] = ks.used;
       e["rejected"] = nlohmann::ordered_json::object();
       for (const auto& [reason, n] : ks.rejected) e["rejected"][reason] = n;
+      e["pending_at_end"] = ks.pending;
     }
     m[std::string(to_string(static_cast<MeasurementKind>(k)))] = e;
   }
@@ -75,6 +76,7 @@ void Summary::print(std::ostream& os, bool decode_only) const {
         first = false;
       }
       if (!first) os << ")";
+      if (ks.pending > 0) os << "  pending at end " << ks.pending;
     }
     os << "\n";
   }

@@ -1,7 +1,8 @@
 // The run summary of `navfuse decode` / `replay` / `bench`: per input stream counters, per
 // measurement kind decoded / used / rejected-by-reason, and run statistics. Printed as text and
 // written as JSON with the DESIGN.md keys (contract): inputs[] {path, format, bytes, frames,
-// bad_frames, skipped_bytes}, measurements {kind: {decoded, used, rejected{reason: n}}},
+// bad_frames, skipped_bytes}, measurements {kind: {decoded, used, rejected{reason: n},
+// pending_at_end}},
 // run {wall_s, imu_samples_per_s, modes_reached}.
 #pragma once
 
@@ -30,6 +31,7 @@ struct KindSummary {
   std::uint64_t decoded = 0;
   std::uint64_t used = 0;
   std::map<std::string, std::uint64_t> rejected;  // ordered: deterministic output
+  std::uint64_t pending = 0;  // held at the end, neither used nor rejected: decoded = used + rejected + pending
 };
 
 struct RunStats {
