@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Peak memory of `navfuse bench` against `navfuse replay` on a ~1 GB log (issue 15.10: bench must
 # stream like replay, its memory flat in the input size). The log is the drive_8h scenario as a
-# VN-300 log with the device's own INS solution at 50 Hz, made by `navfuse sim` in a temporary
+# VN-300 log with the device's own INS solution at its default rate, made by `navfuse sim` in a temporary
 # folder (WORK, default a fresh folder under /tmp; never commit it). Peak RSS is /usr/bin/time's
 # "Maximum resident set size". Not a timed test: run it by hand and quote the figures in README.
 #
@@ -18,7 +18,7 @@ if [ -z "$work" ]; then
 fi
 
 log="$work/drive_8h.vnb"
-[ -s "$log" ] || "$NAVFUSE" sim --scenario drive_8h --format vn --out "$log" --device-rate 50 --quiet
+[ -s "$log" ] || "$NAVFUSE" sim --scenario drive_8h --format vn --out "$log" --quiet
 log_mb=$(( $(stat -c %s "$log") / 1048576 ))
 
 peak_mb() {  # peak RSS in MB of the command given

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <cstdio>
 
 #include "apps/common/summary.hpp"
 #include "apps/fusion/fusion_runner.hpp"
@@ -65,7 +66,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::uint8_t kind = in.u8();
     t_ns += time_step_ns(in.u8(), in.i32());
     MeasurementHeader header{.time_ns = t_ns,
-                             .time_source = (kind & 0x80) ? TimeSource::kDevice : TimeSource::kGps,
+                             .time_source = (kind & 0x80) ? TimeSource::kDeviceMonotonic : TimeSource::kGps,
                              .stream_id = 0,
                              .valid = 0};
     switch (kind % 5) {
@@ -118,7 +119,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const apps::KindSummary& k : summary.kinds) {
     std::uint64_t rejected = 0;
     for (const auto& [reason, n] : k.rejected) rejected += n;
-    if (k.decoded != k.used + rejected + k.pending) __builtin_trap();  // the counts must add up
+    if (k.decoded != k.used + rejected + k.pending) {
+      std::fprintf(stderr, "counts do not add up: decoded %llu, used %llu, rejected %llu, pending %llu\n",
+                   static_cast<unsigned long long>(k.decoded), static_cast<unsigned long long>(k.used),
+                   static_cast<unsigned long long>(rejected), static_cast<unsigned long long>(k.pending));
+      __builtin_trap();  // the counts must add up
+    }
   }
   return 0;
 }
