@@ -142,7 +142,8 @@ std::uint64_t Engine::pending(MeasurementKind kind) const {
 void Engine::process_aiding(const Measurement& m) {
   const std::int64_t t = header_of(m).time_ns;
   const MeasurementKind kind = kind_of(m);
-  if (imu_seq_ > 0 && static_cast<double>(core_.x.time_ns - t) * 1e-9 > options_.max_latency_s) {
+  // The difference in double: a checksum-valid time centuries off must not overflow int64 (UB).
+  if (imu_seq_ > 0 && (static_cast<double>(core_.x.time_ns) - static_cast<double>(t)) * 1e-9 > options_.max_latency_s) {
     count(kind, FuseResult::reject(RejectReason::kTooLate));
     return;
   }
