@@ -62,14 +62,17 @@ void Engine::dispatch(MeasurementKind kind, const Measurement& m) {
 void Engine::process_imu(const ImuSample& s) {
   KindStats& st = stats_.of(MeasurementKind::kImu);
   const std::int64_t t = s.header.time_ns;
+  bool restarted = false;
   if (imu_input_.has_previous()) {
     if (t <= imu_input_.previous_time_ns()) {
       ++st.rejected[static_cast<std::size_t>(RejectReason::kTimeBackwards)];
       return;
     }
     if (static_cast<double>(t - imu_input_.previous_time_ns()) * 1e-9 > options_.max_imu_gap_s) {
-      // The state cannot be carried across the gap: start again from this sample.
+      // The state cannot be carried across the gap: start again from this sample. The sample is
+      // counted once, as time_gap (not also as used below), so that decoded = used + rejected.
       ++st.rejected[static_cast<std::size_t>(RejectReason::kTimeGap)];
+      restarted = true;
       ++core_.mode.restarts;
       core_.restart(options_);
       forget_history();
@@ -79,7 +82,7 @@ void Engine::process_imu(const ImuSample& s) {
   imu_time_source_ = s.header.time_source;
   if (s.saturation != 0) core_.mode.last_imu_fault_ns = t;
   const std::optional<ImuIncrement> inc = imu_input_.convert(s);
-  ++st.used;
+  if (!restarted) ++st.used;
   if (!inc) return;
   const ImuRecord record{*inc, t + to_ns(0.5 * inc->dt_s), ++imu_seq_};
   imu_history_.push_back(record);
@@ -150,6 +153,11 @@ void Engine::maybe_checkpoint(const ImuRecord& record) {
   entries_.erase(entries_.begin(), keep);
 }
 
+std::uint64_t Engine::pending(MeasurementKind kind) const {
+  return static_cast<std::uint64_t>(
+      std::count_if(entries_.begin(), entries_.end(), [kind](const Entry& e) { return !e.counted && kind_of(e.m) == kind; }));
+}
+
 void Engine::process_aiding(const Measurement& m) {
   const std::int64_t t = header_of(m).time_ns;
   const MeasurementKind kind = kind_of(m);
@@ -207,6 +215,11 @@ void Engine::replay_from(std::int64_t t) {
 }
 
 void Engine::forget_history() {
+  // Aiding still waiting for the IMU belongs to the stretch that was lost: counted as time_gap,
+  // not dropped from the counts (decoded = used + rejected + pending).
+  for (const Entry& e : entries_) {
+    if (!e.counted) count(kind_of(e.m), FuseResult::reject(RejectReason::kTimeGap));
+  }
   entries_.clear();
   checkpoints_.clear();
   imu_history_.clear();

@@ -68,6 +68,9 @@ class Engine {
   const FilterStats& stats() const;
   // Measurements of `kind` used so far (cheap: stats() copies the whole table).
   std::uint64_t used(MeasurementKind kind) const { return stats_.of(kind).used; }
+  // Measurements of `kind` held for the IMU to reach their time and not yet fused or rejected:
+  // at the end of a log, what is neither used nor rejected (decoded = used + rejected + pending).
+  std::uint64_t pending(MeasurementKind kind) const;
   const FilterOptions& options() const { return options_; }
 
   void reset(std::uint32_t mask);

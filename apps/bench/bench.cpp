@@ -9,6 +9,8 @@
 #include "apps/bench/report_renderer.hpp"
 #include "apps/bench/series_csv.hpp"
 #include "apps/common/command_error.hpp"
+#include "apps/common/interrupt_signals.hpp"
+#include "apps/common/rejection_warning.hpp"
 #include "apps/common/summary.hpp"
 
 namespace navfuse::apps::bench {
@@ -51,10 +53,21 @@ BenchResult run_bench(const BenchOptions& options) {
                                           .config_path = options.config_path,
                                           .allow_truncated = options.allow_truncated,
                                           .progress = options.progress,
-                                          .smooth = smoothed});
+                                          .smooth = smoothed,
+                                          .interrupt = options.interrupt});
+  const int interrupted_by = log.summary.interrupted_by;
   const AnalysisOptions analysis_options{
       .truth_path = options.truth_path, .max_gap_s = options.max_gap_s, .smoothed_reference = smoothed};
-  const BenchAnalysis analysis = analyse(log, analysis_options);
+  const BenchAnalysis analysis = [&] {
+    try {
+      return analyse(log, analysis_options);
+    } catch (const CommandError& e) {
+      if (interrupted_by == 0) throw;
+      throw CommandError("bench interrupted by signal " + std::to_string(interrupted_by) +
+                             " before there was anything to compare: " + e.what(),
+                         interrupted_exit_code(interrupted_by));
+    }
+  }();
   const nlohmann::ordered_json metrics = analysis.metrics_json(log, analysis_options);
   write_json_file(options.report_dir + "/metrics.json", metrics);
   write_series_csvs(options.report_dir, log, analysis);
@@ -63,6 +76,14 @@ BenchResult run_bench(const BenchOptions& options) {
   BenchResult result;
   result.notes = analysis.notes;
   result.summary_text = summary_text(analysis);
+  result.warnings = rejection_warnings(log.summary.kinds);
+  result.interrupted_by = interrupted_by;
+  if (interrupted_by != 0) {
+    char line[160];
+    std::snprintf(line, sizeof line, "interrupted by signal %d: the report covers the first %.1f s of the log\n",
+                  interrupted_by, static_cast<double>(log.end_ns - log.start_ns) * 1e-9);
+    result.summary_text += line;
+  }
   result.exceeded = exceeded_thresholds(options.fail_above, metrics);
   return result;
 }

@@ -9,6 +9,7 @@
 // check the --fail-above bounds.
 #pragma once
 
+#include <atomic>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,15 +30,22 @@ struct BenchOptions {
   bool html = true;       // false: metrics.json and CSVs only (no Python needed)
   bool progress = false;  // progress of long logs on stderr
   std::string reference;  // --reference smoothed: also compare both with navfuse's smoothed run
+  // Polled while fusing (InterruptSignals::received()): non-zero stops reading; the report
+  // covers the part read and BenchResult::interrupted_by says so.
+  const std::atomic<int>* interrupt = nullptr;
 };
 
 struct BenchResult {
   std::vector<std::string> exceeded;  // --fail-above bounds that were exceeded
   std::vector<std::string> notes;
   std::string summary_text;           // the summary table printed by the command
+  std::vector<std::string> warnings;  // most IMU / GNSS samples rejected (rejection_warning.hpp)
+  int interrupted_by = 0;             // the signal that stopped the run early (0: ran to the end)
 };
 
-// Throws CommandError with a one-line reason on bad input (see collect_bench_log, analyse).
+// Throws CommandError with a one-line reason on bad input (see collect_bench_log, analyse); exit 2
+// when there is nothing to compare; after a signal, exit 128 + signal when what was read holds
+// nothing to compare yet.
 BenchResult run_bench(const BenchOptions& options);
 
 // Exit status when a --fail-above bound is exceeded (1 is any error).

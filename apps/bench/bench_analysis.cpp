@@ -4,6 +4,7 @@
 
 #include "apps/bench/truth_reference.hpp"
 #include "apps/common/command_error.hpp"
+#include "apps/common/empty_run.hpp"
 #include "core/geodesy/geodesy.hpp"
 #include "core/rotation/rotation.hpp"
 
@@ -116,8 +117,8 @@ BenchAnalysis analyse(const BenchLog& log, const AnalysisOptions& options) {
   if (navfuse.empty()) {
     std::string modes;
     for (const auto& m : log.summary.run->modes_reached) modes += " " + m;
-    throw CommandError("empty overlap: navfuse reached no navigation solution in the log (modes reached:" + modes +
-                       "), so there is nothing to compare");
+    throw nothing_useful_error("bench", "empty overlap: navfuse reached no navigation solution in the log (modes reached:" +
+                                            modes + "), so there is nothing to compare");
   }
   // A device still initialising may flag fields valid that hold no solution yet (zeros): only
   // samples from a mode with an estimate are compared.

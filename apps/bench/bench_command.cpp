@@ -5,7 +5,10 @@
 
 #include "apps/bench/bench.hpp"
 #include "apps/common/command_help.hpp"
+#include "apps/common/command_error.hpp"
+#include "apps/common/empty_run.hpp"
 #include "apps/common/gps_week_option.hpp"
+#include "apps/common/interrupt_signals.hpp"
 
 namespace navfuse::apps {
 
@@ -14,6 +17,7 @@ void add_bench_command(CLI::App& root, int& exit_code) {
     bench::BenchOptions options;
     std::vector<std::string> fail_above;
     bool quiet = false;
+    bool allow_empty = false;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = root.add_subcommand(
@@ -41,17 +45,33 @@ void add_bench_command(CLI::App& root, int& exit_code) {
                      {"the demo CV7 log: navfuse and the CV7's own filter, both against the simulated truth",
                       "navfuse bench --config data/demo/cv7.yaml data/demo/cv7.mip --truth data/demo/truth.csv "
                       "--report bench-cv7"}});
+  cmd->add_flag("--allow-empty", args->allow_empty, kAllowEmptyHelp);
   cmd->callback([args, &exit_code] {
     for (const auto& a : args->fail_above) args->options.fail_above.push_back(bench::parse_fail_threshold(a));
     args->options.progress = !args->quiet;
-    const bench::BenchResult result = bench::run_bench(args->options);
+    const InterruptSignals signals;
+    args->options.interrupt = &InterruptSignals::received();
+    bench::BenchResult result;
+    try {
+      result = bench::run_bench(args->options);
+    } catch (const CommandError& e) {
+      exit_code = tolerate_empty(e, args->allow_empty);
+      return;
+    }
     if (!args->quiet) {
       for (const auto& note : result.notes) std::cerr << "navfuse bench: " << note << "\n";
+    }
+    for (const auto& warning : result.warnings) std::cerr << "navfuse bench: warning: " << warning << "\n";
+    if (!args->quiet || result.interrupted_by != 0) {
       std::cout << result.summary_text << "report: " << args->options.report_dir << "/"
                 << (args->options.html ? "report.html" : "metrics.json") << "\n";
     }
     for (const auto& line : result.exceeded) std::cerr << "navfuse bench: bound exceeded: " << line << "\n";
-    exit_code = result.exceeded.empty() ? 0 : bench::kExitThresholdExceeded;
+    if (result.interrupted_by != 0) {
+      exit_code = interrupted_exit_code(result.interrupted_by);
+    } else {
+      exit_code = result.exceeded.empty() ? 0 : bench::kExitThresholdExceeded;
+    }
   });
 }
 

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "apps/common/command_error.hpp"
+#include "apps/common/empty_run.hpp"
 #include "apps/common/input_spec.hpp"
 #include "apps/fusion/fusion_runner.hpp"
 #include "apps/fusion/log_fusion.hpp"
@@ -97,9 +98,10 @@ BenchLog collect_bench_log(const BenchLogOptions& options) {
                       observer);
   std::unique_ptr<filter::ForwardRecorder> record;
   if (options.smooth) record = record_forward_pass(runner.engine());
-  log.summary = fuse_log(
-      merger, runner, observer,
-      {.progress_bar = options.progress, .progress_lines_label = options.progress ? "navfuse bench" : nullptr});
+  log.summary = fuse_log(merger, runner, observer,
+                         {.progress_bar = options.progress,
+                          .progress_lines_label = options.progress ? "navfuse bench" : nullptr,
+                          .interrupt = options.interrupt});
   if (record) smooth_into(*record, runner, filter_options, config.output.rate_hz, log.smoothed);
   const std::optional<MeasurementHeader>& imu_header = runner.first_imu();
   const std::optional<MeasurementHeader>& device_header = observer.device_header;
@@ -109,11 +111,15 @@ BenchLog collect_bench_log(const BenchLogOptions& options) {
   }
   log.imu_samples = runner.imu_samples();
 
+  for (const InputSummary& in : log.summary.inputs) {
+    if (std::string reason = no_frame_reason(in); !reason.empty()) throw nothing_useful_error("bench", reason);
+  }
   if (!imu_header) {
     std::string names;
     for (std::size_t i = 0; i < specs.size(); ++i) names += (i ? ", " : "") + input_name(specs, i);
-    throw CommandError("no IMU samples in " + names +
-                       ": bench runs navfuse on the log's own IMU data (log the device's IMU output too)");
+    throw nothing_useful_error("bench", "no IMU samples in " + names +
+                                            ": bench runs navfuse on the log's own IMU data (log the device's IMU "
+                                            "output too)");
   }
   log.time_source = imu_header->time_source;
   if (device_header && !same_time_base(*device_header, *imu_header)) {

@@ -8,6 +8,7 @@
 // aligned: GPS time for both, or the same device's own clock.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -26,6 +27,9 @@ struct BenchLogOptions {
   bool allow_truncated = false;
   bool progress = false;  // report progress of long logs on stderr
   bool smooth = false;    // --reference smoothed: record the run and smooth it (BenchLog::smoothed)
+  // Polled while fusing (InterruptSignals::received()): non-zero stops reading; the log is what
+  // was read so far and summary.interrupted_by says so.
+  const std::atomic<int>* interrupt = nullptr;
 };
 
 struct BenchLog {
@@ -45,8 +49,9 @@ struct BenchLog {
   Summary summary;  // inputs and decoded counts, as replay reports them
 };
 
-// Throws CommandError with a one-line reason: unreadable input, bad config, no IMU samples,
-// a device solution on another time base than the IMU.
+// Throws CommandError with a one-line reason: unreadable input, bad config, a device solution on
+// another time base than the IMU; exit 2 (nothing_useful_error) for an input without a frame or
+// a log without IMU samples.
 BenchLog collect_bench_log(const BenchLogOptions& options);
 
 }  // namespace navfuse::apps::bench

@@ -8,4 +8,5 @@ target_sources(navfuse_apps PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/measurement_fields.cpp
   ${CMAKE_CURRENT_LIST_DIR}/progress_bar.cpp
   ${CMAKE_CURRENT_LIST_DIR}/recording_format.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/rejection_warning.cpp
   ${CMAKE_CURRENT_LIST_DIR}/summary.cpp)

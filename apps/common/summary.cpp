@@ -3,6 +3,7 @@
 #include <iomanip>
 
 #include "apps/common/command_error.hpp"
+#include "apps/common/rejection_warning.hpp"
 #include "apps/output/output_file.hpp"
 
 namespace navfuse::apps {
@@ -35,6 +36,7 @@ nlohmann::ordered_json Summary::to_json(bool decode_only) const {
                            {"mean_nis_per_dim", ks.innovation->mean_nis_per_dim},
                            {"fraction_above_gate", ks.innovation->fraction_above_gate}};
       }
+      e["pending_at_end"] = ks.pending;
     }
     m[std::string(to_string(static_cast<MeasurementKind>(k)))] = e;
   }
@@ -44,6 +46,12 @@ nlohmann::ordered_json Summary::to_json(bool decode_only) const {
                 {"imu_samples_per_s", run->imu_samples_per_s},
                 {"modes_reached", run->modes_reached}};
     if (interrupted_by != 0) j["run"]["interrupted_by_signal"] = interrupted_by;
+  } else if (interrupted_by != 0) {
+    j["interrupted_by_signal"] = interrupted_by;
+  }
+  if (!decode_only) {
+    const std::vector<std::string> warnings = rejection_warnings(kinds);
+    if (!warnings.empty()) j["warnings"] = warnings;
   }
   if (adaptation && !decode_only) {
     j["filter"] = {{"covariance_inflations", adaptation->covariance_inflations},
@@ -80,6 +88,7 @@ void Summary::print(std::ostream& os, bool decode_only) const {
         first = false;
       }
       if (!first) os << ")";
+      if (ks.pending > 0) os << "  pending at end " << ks.pending;
     }
     os << "\n";
   }
@@ -89,9 +98,12 @@ void Summary::print(std::ostream& os, bool decode_only) const {
        << run->imu_samples_per_s << " IMU samples/s; modes reached:";
     for (const auto& mode : run->modes_reached) os << " " << mode;
     os << "\n" << std::defaultfloat;
-    if (interrupted_by != 0) {
-      os << "interrupted by signal " << interrupted_by << ": stopped early, outputs hold what was processed\n";
-    }
+  }
+  if (!decode_only) {
+    for (const std::string& warning : rejection_warnings(kinds)) os << "warning: " << warning << "\n";
+  }
+  if (interrupted_by != 0) {
+    os << "interrupted by signal " << interrupted_by << ": stopped early, outputs hold what was processed\n";
   }
 }
 

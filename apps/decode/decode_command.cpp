@@ -13,7 +13,9 @@
 
 #include "apps/common/command_error.hpp"
 #include "apps/common/command_help.hpp"
+#include "apps/common/empty_run.hpp"
 #include "apps/common/input_bytes.hpp"
+#include "apps/common/interrupt_signals.hpp"
 #include "apps/common/gps_week_option.hpp"
 #include "apps/common/input_spec.hpp"
 #include "apps/common/measurement_fields.hpp"
@@ -31,6 +33,7 @@ struct DecodeOptions {
   std::string out_path;  // empty: stdout
   std::string summary_json;
   bool quiet = false;
+  bool allow_empty = false;
 };
 
 // CSV in long ("tidy") form, one row per field, because frames of different types have
@@ -131,39 +134,41 @@ int run_decode(const DecodeOptions& opt) {
   InputBytes in(spec);
 
   check_output_paths({spec.path}, {{"--out", opt.out_path}, {"--summary-json", opt.summary_json}});
-  // -o: the records gather in `text` and go to the file after each input chunk (OutputFile:
-  // complete or absent for a regular file, streamed to a device or FIFO).
-  std::optional<OutputFile> file;
-  if (!opt.out_path.empty()) file.emplace(opt.out_path);
+  // The records gather in `text` and go out after each input chunk through an OutputFile (a
+  // regular file -o appears complete or not at all; standard output, a device or a FIFO is
+  // streamed to, and a stalled reader cannot hold off Ctrl-C).
+  OutputFile out(opt.out_path.empty() ? "-" : opt.out_path);
   std::ostringstream text;
-  std::ostream& os = file ? static_cast<std::ostream&>(text) : std::cout;
   const auto drain = [&] {
-    if (!file) return;
-    file->write(text.view());
+    out.write(text.view());
     text.str({});
   };
 
+  const InterruptSignals signals;
   Summary summary;
   auto decoder = make_decoder(spec);
-  PrintingSink sink(os, opt.format == "jsonl", summary);
+  PrintingSink sink(text, opt.format == "jsonl", summary);
   sink.protocol_ = spec.frontend->format;
-  // 256 KiB of input gives a few MB of records to hold before they go to the file.
+  // 256 KiB of input gives a few MB of records to hold before they go out.
   std::vector<std::uint8_t> chunk(1 << 18);
   while (const std::size_t n = in.read(chunk)) {
     decoder->feed(std::span(chunk.data(), n), sink);
     drain();
+    if ((summary.interrupted_by = InterruptSignals::received().load(std::memory_order_relaxed)) != 0) break;
   }
+  // Also after a signal: what is left of the stream is counted (skipped), every record is whole.
   decoder->finish(sink);
-  if (file) {
-    drain();
-    file->commit();
-  } else {
-    os.flush();
-  }
+  drain();
+  out.commit();
 
   summary.inputs.push_back({spec.path, std::string(spec.frontend->format), decoder->counters()});
   if (!opt.summary_json.empty()) write_json_file(opt.summary_json, summary.to_json(/*decode_only=*/true));
-  if (!opt.out_path.empty() && !opt.quiet) summary.print(std::cerr, /*decode_only=*/true);
+  const bool interrupted = summary.interrupted_by != 0;
+  if ((!opt.out_path.empty() && !opt.quiet) || interrupted) summary.print(std::cerr, /*decode_only=*/true);
+  if (interrupted) return interrupted_exit_code(summary.interrupted_by);
+  if (std::string reason = no_frame_reason(summary.inputs.front()); !reason.empty()) {
+    return nothing_useful("decode", reason, opt.allow_empty);
+  }
   return 0;
 }
 
@@ -184,6 +189,7 @@ void add_decode_command(CLI::App& root, int& exit_code) {
                       "navfuse decode data/demo/vn300.vnb --format jsonl | head"},
                      {"a MIP log (format given) to a CSV file, the counters as JSON",
                       "navfuse decode mip:data/demo/cv7.mip -o cv7.csv --summary-json cv7.json"}});
+  sub->add_flag("--allow-empty", opt->allow_empty, kAllowEmptyHelp);
   sub->callback([opt, &exit_code] { exit_code = run_decode(*opt); });
 }
 

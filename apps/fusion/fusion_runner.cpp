@@ -99,7 +99,7 @@ void FusionRunner::after_imu(const ImuSample& s, std::int64_t arrival_ns) {
 }
 
 void FusionRunner::fill_summary(Summary& summary, double wall_s) const {
-  fill_measurement_counts(engine_.stats(), counts_, summary);
+  fill_measurement_counts(engine_, counts_, summary);
   RunStats run;
   run.wall_s = wall_s;
   run.imu_samples_per_s = wall_s > 0.0 ? static_cast<double>(imu_samples_) / wall_s : 0.0;

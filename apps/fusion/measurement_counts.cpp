@@ -9,12 +9,14 @@ void MeasurementCounts::count_gated(MeasurementKind kind, std::string_view reaso
   ++it->second;
 }
 
-void fill_measurement_counts(const filter::FilterStats& stats, const MeasurementCounts& counts, Summary& summary) {
+void fill_measurement_counts(const filter::Engine& engine, const MeasurementCounts& counts, Summary& summary) {
+  const filter::FilterStats& stats = engine.stats();
   for (std::size_t k = 0; k < summary.kinds.size(); ++k) {
     KindSummary& ks = summary.kinds[k];
     const filter::KindStats& fs = stats.kinds[k];
     ks.decoded = counts.decoded[k];
     ks.used = fs.used;
+    ks.pending = engine.pending(static_cast<MeasurementKind>(k));
     for (std::size_t r = 0; r < fs.rejected.size(); ++r) {
       if (fs.rejected[r] > 0) ks.rejected[std::string(filter::to_string(static_cast<filter::RejectReason>(r)))] += fs.rejected[r];
     }

@@ -13,7 +13,7 @@
 
 #include "apps/common/summary.hpp"
 #include "core/measurements/measurements.hpp"
-#include "filter/filter_stats.hpp"
+#include "filter/engine.hpp"
 
 namespace navfuse::apps {
 
@@ -26,8 +26,8 @@ struct MeasurementCounts {
   void count_gated(MeasurementKind kind, std::string_view reason);
 };
 
-// decoded, used, and rejected by reason: the filter's reasons, "ignored" for kinds it does not
-// fuse, and the gate's reasons.
-void fill_measurement_counts(const filter::FilterStats& stats, const MeasurementCounts& counts, Summary& summary);
+// decoded, used, rejected by reason (the filter's reasons, "ignored" for kinds it does not fuse,
+// and the gate's reasons) and pending at the end (held by the filter for the IMU to reach them).
+void fill_measurement_counts(const filter::Engine& engine, const MeasurementCounts& counts, Summary& summary);
 
 }  // namespace navfuse::apps

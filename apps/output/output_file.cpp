@@ -1,15 +1,18 @@
 #include "apps/output/output_file.hpp"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdlib>
+#include <algorithm>
 #include <cstring>
 #include <memory>
 
 #include "apps/common/command_error.hpp"
+#include "apps/common/interrupt_signals.hpp"
 
 namespace navfuse::apps {
 namespace {
@@ -18,6 +21,12 @@ namespace {
 constexpr std::size_t kFileBufferBytes = 1 << 20;
 // Streams (pipes, terminals, devices) see data in pieces this size, not a megabyte at a time.
 constexpr std::size_t kStreamBufferBytes = 1 << 16;
+// One write(2) to a stream after poll(2) reported room: a pipe with room takes PIPE_BUF (4096 on
+// Linux, pipe(7)) bytes without blocking, so a stalled reader cannot block a write this size.
+constexpr std::size_t kStreamWriteBytes = 4096;
+// After Ctrl-C / SIGTERM, a reader that takes no byte for this long is taken as stalled (a
+// reader that is merely slow gets the rest of the complete frames).
+constexpr int kStalledReaderMs = 1000;
 
 bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
 
@@ -47,44 +56,49 @@ OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
   struct stat st {};
   const bool exists = ::stat(path_.c_str(), &st) == 0;
   const bool in_place = system_path(path_) || (exists && !S_ISREG(st.st_mode));
-  std::size_t buffer_bytes = kFileBufferBytes;
   if (in_place) {
-    const int fd = open_in_place(path_);
-    if (fd < 0) cannot_open(path_, std::strerror(errno));
-    file_ = ::fdopen(fd, "wb");
-    if (file_ == nullptr) {
-      const int error = errno;
-      ::close(fd);
-      cannot_open(path_, std::strerror(error));
-    }
+    fd_ = open_in_place(path_);
+    if (fd_ < 0) cannot_open(path_, std::strerror(errno));
     final_path_ = path_;
-    buffer_bytes = kStreamBufferBytes;
-  } else {
-    struct stat link {};
-    final_path_ = path_;
-    if (::lstat(path_.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) {
-      // A link to a regular file: replace the target, keep the link. A dangling link is refused
-      // rather than replaced by a file.
-      std::unique_ptr<char, decltype(&std::free)> target(::realpath(path_.c_str(), nullptr), &std::free);
-      if (!exists || target == nullptr) cannot_open(path_, "it is a symbolic link to a missing file");
-      final_path_ = target.get();
-    }
-    partial_path_ = final_path_ + ".partial";
-    file_ = std::fopen(partial_path_.c_str(), "wb");
-    if (file_ == nullptr) cannot_open(path_, std::strerror(errno));
+    buffer_.resize(kStreamBufferBytes);
+    return;
   }
-  buffer_.resize(buffer_bytes);
+  struct stat link {};
+  final_path_ = path_;
+  if (::lstat(path_.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) {
+    // A link to a regular file: replace the target, keep the link. A dangling link is refused
+    // rather than replaced by a file.
+    std::unique_ptr<char, decltype(&std::free)> target(::realpath(path_.c_str(), nullptr), &std::free);
+    if (!exists || target == nullptr) cannot_open(path_, "it is a symbolic link to a missing file");
+    final_path_ = target.get();
+  }
+  partial_path_ = final_path_ + ".partial";
+  file_ = std::fopen(partial_path_.c_str(), "wb");
+  if (file_ == nullptr) cannot_open(path_, std::strerror(errno));
+  buffer_.resize(kFileBufferBytes);
   std::setvbuf(file_, buffer_.data(), _IOFBF, buffer_.size());
 }
 
 OutputFile::~OutputFile() {
   if (file_ != nullptr) std::fclose(file_);
+  if (fd_ >= 0) ::close(fd_);
   if (!committed_ && !in_place()) std::remove(partial_path_.c_str());
 }
 
 void OutputFile::write(std::span<const std::uint8_t> bytes) {
   if (bytes.empty()) return;
-  if (file_ == nullptr) fail("write after commit", EBADF);
+  if (committed_) fail("write after commit", EBADF);
+  if (in_place()) {
+    while (!bytes.empty()) {
+      if (buffered_ == buffer_.size()) flush_stream();
+      const std::size_t n = std::min(bytes.size(), buffer_.size() - buffered_);
+      std::memcpy(buffer_.data() + buffered_, bytes.data(), n);
+      buffered_ += n;
+      bytes_ += n;
+      bytes = bytes.subspan(n);
+    }
+    return;
+  }
   if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size()) fail("write error", errno);
   bytes_ += bytes.size();
 }
@@ -93,8 +107,49 @@ void OutputFile::write(std::string_view text) {
   write(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
 }
 
+void OutputFile::flush_stream() {
+  std::size_t done = 0;
+  while (done < buffered_) {
+    pollfd fds[2] = {{.fd = fd_, .events = POLLOUT, .revents = 0},
+                     {.fd = InterruptSignals::wake_fd(), .events = POLLIN, .revents = 0}};
+    const nfds_t count = fds[1].fd >= 0 ? 2 : 1;
+    if (::poll(fds, count, -1) < 0) {
+      if (errno == EINTR) continue;
+      fail("write error", errno);
+    }
+    // Room (or an error that write() will name) goes first: after a signal, whatever the reader
+    // still takes is written; only a reader that takes nothing for kStalledReaderMs ends the
+    // output.
+    if (fds[0].revents == 0) {
+      const int ready = ::poll(fds, 1, kStalledReaderMs);
+      if (ready < 0) continue;  // another signal: look again
+      if (ready == 0) {
+        const int signal_number = InterruptSignals::received().load(std::memory_order_relaxed);
+        throw CommandError("stopped writing '" + path_ + "' on signal " + std::to_string(signal_number) +
+                               ": its reader took no more data",
+                           interrupted_exit_code(signal_number));
+      }
+    }
+    const ssize_t n = ::write(fd_, buffer_.data() + done, std::min(kStreamWriteBytes, buffered_ - done));
+    if (n < 0) {
+      if (errno == EINTR || errno == EAGAIN) continue;
+      fail("write error", errno);
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  buffered_ = 0;
+}
+
 void OutputFile::commit() {
   if (committed_) return;
+  if (in_place()) {
+    flush_stream();
+    const int close_error = ::close(fd_) == 0 ? 0 : errno;
+    fd_ = -1;
+    committed_ = true;
+    if (close_error != 0) fail("write error", close_error);
+    return;
+  }
   const int flush_error = std::fflush(file_) == 0 ? 0 : errno;
   const int close_error = std::fclose(file_) == 0 ? 0 : errno;
   file_ = nullptr;

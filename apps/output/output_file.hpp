@@ -14,6 +14,11 @@
 // Every write error (ENOSPC, EPIPE, EIO, ...) is a CommandError naming the path and the reason,
 // from write() or at the latest from commit(). A pipe whose reader went away gives EPIPE only
 // when SIGPIPE is ignored, as main() does.
+//
+// An in-place output waits for room with poll(2) next to InterruptSignals::wake_fd(): after
+// Ctrl-C / SIGTERM it still writes while the reader takes data, but a reader that stalls (a FIFO
+// nobody drains) no longer holds the process: the write ends in a CommandError with exit status
+// 128 + signal instead of blocking forever.
 #pragma once
 
 #include <cstdint>
@@ -51,8 +56,12 @@ class OutputFile {
   std::string path_;          // as given, for messages
   std::string final_path_;    // what commit() renames onto (a link's target)
   std::string partial_path_;  // empty when written in place
-  std::FILE* file_ = nullptr;
-  std::vector<char> buffer_;
+  void flush_stream();  // in place: the buffered bytes to fd_
+
+  std::FILE* file_ = nullptr;  // regular file (.partial)
+  int fd_ = -1;                // in place
+  std::vector<char> buffer_;   // stdio's buffer, or the in-place bytes not yet written
+  std::size_t buffered_ = 0;   // in place: bytes of buffer_ in use
   std::uint64_t bytes_ = 0;
   bool committed_ = false;
 };

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "apps/common/command_error.hpp"
+#include "apps/common/empty_run.hpp"
 #include "apps/common/frontend_registry.hpp"
 #include "apps/common/input_spec.hpp"
 #include "apps/common/recording_format.hpp"
@@ -57,7 +58,13 @@ class ReplayObserver final : public FusionObserver {
     }
     if (writer_) writer_->post(epoch);
     if (accuracy_ && epoch.pose_due) accuracy_->add(epoch.solution);
+    if (epoch.pose_due && (epoch.solution.mode == NavMode::kNavigation || epoch.solution.mode == NavMode::kDeadReckoning)) {
+      ++navigating_poses_;
+    }
   }
+  // Poses written in a navigating mode (counted only when there are writers: else the runner
+  // fills no solution).
+  std::uint64_t navigating_poses() const { return navigating_poses_; }
   // Inside the timed run: the summary's rate includes writing the last epochs.
   void on_finished() override {
     if (writer_) writer_->finish();
@@ -68,16 +75,20 @@ class ReplayObserver final : public FusionObserver {
   std::optional<GnssOutagePlan> plan_;  // until handed to accuracy_
   const FusionRunner* runner_ = nullptr;
   std::optional<PoseOutputThread> writer_;
+  std::uint64_t navigating_poses_ = 0;
+};
+
+struct PoseCounts {
+  bool asked = false;            // a pose output was given (--fe-out, --mip-out, --csv, --lcm)
+  std::uint64_t written = 0;
+  std::uint64_t navigating = 0;  // of those, in navigation or dead reckoning
 };
 
 // The one-line reason a replay produced nothing useful, or "" when it did (see ReplayResult).
-std::string replay_failure(const Summary& summary, std::uint64_t imu_fused, const std::vector<NavMode>& modes) {
+std::string replay_failure(const Summary& summary, std::uint64_t imu_fused, const std::vector<NavMode>& modes,
+                           const PoseCounts& poses) {
   for (const InputSummary& in : summary.inputs) {
-    if (in.counters.frames == 0) {
-      return "no frame decoded from " + in.format + ":" + in.path + " (" + std::to_string(in.counters.bytes) +
-             " bytes, " + std::to_string(in.counters.skipped_bytes) +
-             " skipped): is it empty, or the format prefix wrong?";
-    }
+    if (std::string reason = no_frame_reason(in); !reason.empty()) return reason;
   }
   if (imu_fused == 0) {
     const KindSummary& imu = summary.kinds[static_cast<std::size_t>(MeasurementKind::kImu)];
@@ -92,6 +103,12 @@ std::string replay_failure(const Summary& summary, std::uint64_t imu_fused, cons
   if (!left_initialization) {
     return "the filter never left initialization over " + std::to_string(imu_fused) +
            " IMU samples (no attitude, no navigation)";
+  }
+  if (poses.asked && poses.navigating == 0) {
+    std::string reached;
+    for (const NavMode m : modes) reached += (reached.empty() ? "" : ", ") + std::string(to_string(m));
+    return "none of the " + std::to_string(poses.written) +
+           " poses written is in navigation (modes reached: " + reached + "): the outputs hold no position";
   }
   return "";
 }
@@ -237,7 +254,8 @@ ReplayResult run_replay(const ReplayOptions& options) {
     result.forward_accuracy_text = report_accuracy(*forward_accuracy, options.truth_path, "forward_accuracy", summary);
   }
   result.truncated_inputs = merger.truncated_inputs();
-  result.failure = replay_failure(summary, result.imu_samples, runner.engine().modes_reached());
+  result.failure = replay_failure(summary, result.imu_samples, runner.engine().modes_reached(),
+                                  {.asked = !outputs.empty(), .written = result.poses, .navigating = observer.navigating_poses()});
   if (!result.failure.empty()) summary.extra["failure"] = result.failure;
   const auto& imu_rejected = summary.kind(MeasurementKind::kImu).rejected;
   if (const auto it = imu_rejected.find("time_backwards"); it != imu_rejected.end()) {

@@ -5,6 +5,7 @@
 
 #include "apps/common/command_error.hpp"
 #include "apps/common/command_help.hpp"
+#include "apps/common/empty_run.hpp"
 #include "apps/common/interrupt_signals.hpp"
 #include "apps/common/gps_week_option.hpp"
 #include "apps/common/summary.hpp"
@@ -20,6 +21,7 @@ struct ReplayArgs {
   std::string lcm_url;
   CLI::Option* lcm = nullptr;
   bool quiet = false;
+  bool allow_empty = false;
 };
 
 int run(ReplayArgs& args) {
@@ -56,10 +58,10 @@ int run(ReplayArgs& args) {
     std::cerr << "navfuse: " << (args.options.smooth ? "smooth" : "replay") << " interrupted by signal "
               << result.summary.interrupted_by
               << ": outputs and summary cover the part processed\n";
-    return 128 + result.summary.interrupted_by;
+    return interrupted_exit_code(result.summary.interrupted_by);
   }
   if (!result.failure.empty()) {
-    throw CommandError(std::string(args.options.smooth ? "smooth" : "replay") + " produced nothing useful: " + result.failure, 2);
+    return nothing_useful(args.options.smooth ? "smooth" : "replay", result.failure, args.allow_empty);
   }
   return 0;
 }
@@ -115,6 +117,7 @@ void add_fusion_command(CLI::App& root, int& exit_code, const char* name, const 
                        {"a `navfuse run --record rec` recording: the live run's outputs again",
                         "navfuse replay --recording rec --fe-out pose.p1log --mip-out pose.mip"}});
   }
+  sub->add_flag("--allow-empty", args->allow_empty, kAllowEmptyHelp);
   sub->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

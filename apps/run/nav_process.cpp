@@ -231,6 +231,14 @@ void NavProcess::report_status() {
   lcm_->post_status(status_.make(in, now));
 }
 
+std::vector<std::string> NavProcess::output_errors() const {
+  std::vector<std::string> errors;
+  for (const auto& out : outputs_) {
+    if (std::string e = out->write_error(); !e.empty()) errors.push_back(std::move(e));
+  }
+  return errors;
+}
+
 Summary NavProcess::summary() const {
   Summary s;
   for (const auto& in : inputs_) {

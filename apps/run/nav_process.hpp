@@ -53,6 +53,8 @@ class NavProcess final : private FusionObserver {
   void stop();
   // Inputs, measurements decoded / used / rejected and run statistics (complete after stop()).
   Summary summary() const;
+  // After stop(): the write error of each file output that lost bytes (OutputSink::write_error).
+  std::vector<std::string> output_errors() const;
 
  private:
   void filter_loop();

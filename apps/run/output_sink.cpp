@@ -21,7 +21,8 @@ constexpr int kFlushWaitMs = 20;
 
 OutputSink::OutputSink(std::string option, const io::Uri& uri, std::unique_ptr<DeviceEmulator> device,
                        MeasurementQueue& aiding_queue, EngineActionQueue& actions)
-    : name_(std::move(option) + " " + uri.text),
+    : option_(std::move(option)),
+      name_(option_ + " " + uri.text),
       duplex_(uri.scheme != io::Scheme::kFile),
       device_(std::move(device)),
       aiding_queue_(aiding_queue),
@@ -75,7 +76,21 @@ void OutputSink::stream(const OutputEpoch& epoch) {
   device_->stream(epoch, bytes_);
   // A write that no client takes (none connected yet) is not a drop: nobody is behind.
   if (!bytes_.empty()) transport_->write(bytes_);
-  clients_dropped_.store(transport_->stats().clients_dropped, std::memory_order_relaxed);
+  const io::TransportStats& stats = transport_->stats();
+  clients_dropped_.store(stats.clients_dropped, std::memory_order_relaxed);
+  if (!duplex_ && stats.errors > errors_logged_) {
+    // Logged once as it happens (a full disk fails every write after the first).
+    if (errors_logged_ == 0) {
+      first_write_error_ = option_ + " " + stats.last_error;  // last_error names the URI
+      log_event(first_write_error_);
+    }
+    errors_logged_ = stats.errors;
+  }
+}
+
+std::string OutputSink::write_error() const {
+  if (first_write_error_.empty()) return "";
+  return first_write_error_ + " (" + std::to_string(transport_->stats().bytes_dropped) + " bytes lost)";
 }
 
 void OutputSink::serve_commands() {

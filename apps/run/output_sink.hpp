@@ -44,6 +44,10 @@ class OutputSink {
   // Epochs dropped because this thread fell behind, plus clients cut off for falling behind.
   std::uint64_t drops() const;
   const std::string& name() const { return name_; }
+  // After stop(): for a file output (file:PATH), the first write error ("--fe-out file:/x: write:
+  // No space left on device (1234 bytes lost)"), else "". A file that lost bytes is a failed run
+  // (issue 15.7); a network client that went away is not.
+  std::string write_error() const;
 
  private:
   void run();
@@ -51,7 +55,8 @@ class OutputSink {
   void serve_commands();
   void flush_transport();
 
-  std::string name_;  // "--fe-out tcp-listen://:7000", for messages
+  std::string option_;  // "--fe-out"
+  std::string name_;    // "--fe-out tcp-listen://:7000", for messages
   bool duplex_;       // commands can come back (not a file)
   std::unique_ptr<io::Transport> transport_;
   std::unique_ptr<DeviceEmulator> device_;
@@ -71,6 +76,8 @@ class OutputSink {
   std::atomic<bool> stop_{false};
   std::atomic<std::uint64_t> queue_drops_{0};
   std::atomic<std::uint64_t> clients_dropped_{0};
+  std::uint64_t errors_logged_ = 0;  // output thread: transport errors already logged
+  std::string first_write_error_;    // output thread until stop()
 };
 
 }  // namespace navfuse::apps

@@ -39,9 +39,17 @@ int run_nav_process(const RunOptions& options) {
     }
   }
   process.stop();
-  const Summary summary = process.summary();
+  Summary summary = process.summary();
+  const std::vector<std::string> output_errors = process.output_errors();
+  if (!output_errors.empty()) summary.extra["output_errors"] = output_errors;
   if (!options.summary_json.empty()) write_json_file(options.summary_json, summary.to_json(/*decode_only=*/false));
   if (!options.quiet) summary.print(std::cerr, /*decode_only=*/false);
+  // An output file that lost bytes is a failed run, whatever else went well (issue 15.7).
+  if (!output_errors.empty()) {
+    std::string what = output_errors.front();
+    if (output_errors.size() > 1) what += " (and " + std::to_string(output_errors.size() - 1) + " more outputs)";
+    throw CommandError(what);
+  }
   return 0;
 }
 

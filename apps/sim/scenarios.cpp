@@ -103,9 +103,19 @@ TrajectorySpec nine_minute_drive() {
   return t;
 }
 
+// The reference drive 24 times over (8 hours, each lap from a standstill to a standstill): a
+// log of about a gigabyte, for measuring memory against input size (tests/bench/bench_memory.sh).
+TrajectorySpec eight_hour_drive() {
+  constexpr int kLaps = 24;
+  TrajectorySpec t = reference_drive();
+  const std::vector<MotionSegment> lap = t.segments;
+  for (int i = 1; i < kLaps; ++i) t.segments.insert(t.segments.end(), lap.begin(), lap.end());
+  return t;
+}
+
 std::vector<std::string_view> scenario_names() {
   return {"static_start", "drive_outage", "rtk_drive",    "drive_short",
-          "delayed_gnss", "outliers",     "dual_antenna", "drive_9min"};
+          "delayed_gnss", "outliers",     "dual_antenna", "drive_9min", "drive_8h"};
 }
 
 std::optional<Scenario> find_scenario(std::string_view name) {
@@ -151,6 +161,7 @@ std::optional<Scenario> find_scenario(std::string_view name) {
     return s;
   }
   if (name == "drive_9min") return base_scenario("drive_9min", nine_minute_drive());
+  if (name == "drive_8h") return base_scenario("drive_8h", eight_hour_drive());
   return std::nullopt;
 }
 

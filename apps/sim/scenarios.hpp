@@ -14,6 +14,8 @@
 //                 at t = 900 s, no outage.
 //   dual_antenna  drive_short with a 1.5 m dual-antenna baseline heading.
 //   drive_9min    the first 540 s of the reference drive, GNSS throughout (replay throughput benchmark).
+//   drive_8h      the reference drive 24 times over, GNSS throughout: a ~1 GB log for the memory
+//                 benchmark of replay and bench (tests/bench/bench_memory.sh).
 #pragma once
 
 #include <optional>

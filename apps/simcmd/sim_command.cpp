@@ -9,6 +9,8 @@
 #include "apps/common/command_error.hpp"
 #include "apps/common/command_help.hpp"
 #include "apps/common/frontend_registry.hpp"
+#include "apps/common/interrupt_signals.hpp"
+#include "apps/output/output_paths.hpp"
 #include "apps/output/output_file.hpp"
 #include "apps/sim/scenarios.hpp"
 #include "apps/sim/simulator.hpp"
@@ -90,6 +92,9 @@ SimReport run_sim(const SimOptions& options) {
     throw CommandError("scenario '" + options.scenario + "': " + e.what());
   }
 
+  check_output_paths({}, {{"--out", options.out_path},
+                          {"--truth", options.truth_path},
+                          {"--wheel-out", options.wheel_out_path}});
   OutputFile out(options.out_path);
   std::optional<OutputFile> wheel_out;
   if (wheel_frontend) wheel_out.emplace(options.wheel_out_path);
@@ -117,6 +122,7 @@ SimReport run_sim(const SimOptions& options) {
   Measurement m;
   NavSolution solution;
   while (simulator->next(m)) {
+    if (options.interrupt && (report.interrupted_by = options.interrupt->load(std::memory_order_relaxed)) != 0) break;
     const MeasurementKind kind = kind_of(m);
     if (wheel_encoder && is_odometry(kind)) {
       emit(m, *wheel_encoder, *wheel_out, report.wheel_written);
@@ -156,6 +162,9 @@ void print_report(const SimOptions& o, const SimReport& r, std::ostream& os) {
     os << "\n";
   }
   if (!o.truth_path.empty()) os << o.truth_path << ": " << r.truth_rows << " truth rows\n";
+  if (r.interrupted_by != 0) {
+    os << "interrupted by signal " << r.interrupted_by << ": stopped early, the logs hold what was simulated\n";
+  }
   if (!r.dropped.empty()) {
     os << "not carried by " << o.format << " (dropped):";
     counts(r.dropped);
@@ -197,9 +206,11 @@ void add_sim_command(CLI::App& root, int& exit_code) {
   sub->callback([args, seed, &exit_code] {
     if (seed->count() > 0) args->options.seed = args->seed;
     if (args->device_rate_hz >= 0.0) args->options.device_rate_hz = args->device_rate_hz;
+    const InterruptSignals signals;
+    args->options.interrupt = &InterruptSignals::received();
     const SimReport report = run_sim(args->options);
-    if (!args->quiet) print_report(args->options, report, std::cout);
-    exit_code = 0;
+    if (!args->quiet || report.interrupted_by != 0) print_report(args->options, report, std::cout);
+    exit_code = report.interrupted_by != 0 ? interrupted_exit_code(report.interrupted_by) : 0;
   });
 }
 

@@ -7,6 +7,7 @@
 // devices such as the VN-300 that have no wheel input).
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -27,6 +28,9 @@ struct SimOptions {
   // > 0: the scenario's vehicle speed becomes a vehicle tick counter of this many metres per
   // count (WheelTicks, one channel: FusionEngine VehicleTickInput on --wheel-out).
   double wheel_tick_m = 0.0;
+  // Polled per measurement (InterruptSignals::received()): non-zero stops the simulation; the
+  // logs are committed with the frames written so far and SimReport::interrupted_by says so.
+  const std::atomic<int>* interrupt = nullptr;
 };
 
 struct SimReport {
@@ -36,6 +40,7 @@ struct SimReport {
   std::map<std::string, std::uint64_t> dropped;  // kinds the protocol cannot carry
   std::uint64_t truth_rows = 0;
   std::uint64_t out_bytes = 0, wheel_bytes = 0;
+  int interrupted_by = 0;  // the signal that stopped the simulation early (0: ran to the end)
 };
 
 // Throws CommandError with a one-line reason (unknown scenario or format, unwritable file).

@@ -22,26 +22,30 @@ constexpr bool kFixedLayout = !requires(M m) { m.sync_lengths(); } &&
                               !std::is_same_v<M, InputDataWrapperMessage> &&
                               !std::is_same_v<M, Sta5635IqDataMessage>;
 
-// Bound per type id (0: no bound beyond kMaxPayloadSize); a table so the framer's check is one
-// load per frame.
+// Bound per type id: the fixed layout's size plus kMaxVersionGrowth, kVariableLayout for a
+// variable-length type of the catalogue, 0 for a type the catalogue does not know; a table so
+// the framer's check is one load per frame.
 using SizeBounds = std::array<std::uint16_t, 65536>;
+constexpr std::uint16_t kVariableLayout = 0xFFFF;
 template <std::size_t... I>
 constexpr SizeBounds make_size_bounds(std::index_sequence<I...>) {
   SizeBounds bound{};
   ((bound[to_u16(std::tuple_element_t<I, AllMessages>::kType)] =
         kFixedLayout<std::tuple_element_t<I, AllMessages>>
             ? static_cast<std::uint16_t>(std::tuple_element_t<I, AllMessages>::kSize + kMaxVersionGrowth)
-            : std::uint16_t{0}),
+            : kVariableLayout),
    ...);
   return bound;
 }
 constexpr SizeBounds kSizeBounds = make_size_bounds(std::make_index_sequence<kCatalogSize>{});
+static_assert(kSizeBounds[to_u16(PoseMessage::kType)] < kVariableLayout, "fixed bounds stay below the marker");
 
 }  // namespace
 
 std::uint32_t max_payload_size(std::uint16_t message_type) {
   const std::uint16_t b = kSizeBounds[message_type];
-  return b == 0 ? kMaxPayloadSize : b;
+  if (b == 0) return kMaxUnknownPayloadSize;
+  return b == kVariableLayout ? kMaxPayloadSize : b;
 }
 
 std::optional<std::string_view> message_name(std::uint16_t message_type) {

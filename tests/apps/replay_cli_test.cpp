@@ -127,7 +127,13 @@ TEST_F(ReplayBadInput, BadConfigKey) {
 }
 
 TEST_F(ReplayBadInput, GoodInputSucceedsAndWritesTheOutput) {
-  const auto r = run_cli({"replay", log_.string(), "--fe-out", out_.string(), "--quiet"});
+  // static_start never has a heading, so none of its poses is in navigation: exit 2 unless
+  // --allow-empty (issue 15, exit codes); the output is written either way.
+  const auto refused = run_cli({"replay", log_.string(), "--fe-out", out_.string(), "--quiet"});
+  EXPECT_EQ(refused.exit_code, 2) << refused.error;
+  EXPECT_NE(refused.error.find("poses written is in navigation"), std::string::npos) << refused.error;
+  std::filesystem::remove(out_);
+  const auto r = run_cli({"replay", log_.string(), "--fe-out", out_.string(), "--quiet", "--allow-empty"});
   EXPECT_EQ(r.exit_code, 0) << r.error;
   EXPECT_TRUE(std::filesystem::exists(out_));
   EXPECT_FALSE(std::filesystem::exists(out_.string() + ".partial"));

@@ -1,7 +1,7 @@
 // Throughput of the MIP front-end on a CV7-style stream: 0x80 IMU packets (GPS timestamp, scaled
 // accel and gyro) at 10x the rate of 0x82 filter packets (timestamp, status, LLH, velocity,
-// quaternion, Euler, uncertainties), as MicroStrain's mip_sdk framing benchmark uses; 1% of the
-// bytes are replaced by random values (fixed seed). Reports bytes_per_second for framing alone
+// quaternion, Euler, uncertainties), as MicroStrain's mip_sdk framing benchmark uses, repeated to
+// 200 MB (corrupted_stream.hpp); 1% of the bytes are replaced by random values (fixed seed). Reports bytes_per_second for framing alone
 // and for framing plus decoding into core measurements.
 #include <benchmark/benchmark.h>
 
@@ -11,6 +11,7 @@
 #include "frontends/mip/decoder.hpp"
 #include "frontends/mip/encoder.hpp"
 #include "frontends/mip/framer.hpp"
+#include "tests/bench/corrupted_stream.hpp"
 
 namespace {
 
@@ -42,6 +43,7 @@ std::vector<std::uint8_t> make_stream() {
       enc.encode(s, bytes);
     }
   }
+  bench::repeat_to(bytes, bench::kCorruptedStreamBytes);
   std::mt19937 rng(12345);
   std::uniform_int_distribution<int> pct(0, 99), byte(0, 255);
   for (auto& b : bytes)

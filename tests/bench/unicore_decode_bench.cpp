@@ -1,7 +1,8 @@
 // Throughput of the UM220-INS front-end (issue #6 goal: >= 200 MB/s) on a mixed stream written
 // by the project's own encoder: GYOACC at 10 Hz, NAVTIME/NAVACC/NAVPOS/NAVVEL/GST/GGA/NAVATT at
 // 1 Hz, plus the spec's GSA/GSV/RMC/VTG/SNRSTAT/NOTICE examples each second, with 1 % of the
-// bytes overwritten at random (fixed seed) so that resynchronisation is on the measured path.
+// bytes overwritten at random (fixed seed) so that resynchronisation is on the measured path; the
+// stream is repeated to 200 MB before it is corrupted (corrupted_stream.hpp).
 #include <benchmark/benchmark.h>
 
 #include <random>
@@ -12,6 +13,7 @@
 #include "frontends/nmea/framer.hpp"
 #include "frontends/unicore/decoder.hpp"
 #include "frontends/unicore/encoder.hpp"
+#include "tests/bench/corrupted_stream.hpp"
 
 namespace {
 
@@ -82,6 +84,7 @@ std::vector<std::uint8_t> make_stream() {
     enc.encode(n, out);
     for (const char* e : kOneHertzExamples) out.insert(out.end(), e, e + std::char_traits<char>::length(e));
   }
+  bench::repeat_to(out, bench::kCorruptedStreamBytes);
   std::mt19937_64 corrupt(1);
   const auto n_corrupt = static_cast<std::size_t>(static_cast<double>(out.size()) * kCorruptFraction);
   for (std::size_t i = 0; i < n_corrupt; ++i) out[corrupt() % out.size()] = static_cast<std::uint8_t>(corrupt());

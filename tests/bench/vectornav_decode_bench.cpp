@@ -1,12 +1,13 @@
 // Framing + decoding throughput of the "vn" StreamDecoder (issue #5 goal: >= 500 MB/s) on the
 // log the encoder writes for fusion: 200 Hz IMU (delta) and INS messages interleaved with 5 Hz
-// GNSS1/GNSS2 position and velocity messages, with 1% of the bytes replaced by random values
+// GNSS1/GNSS2 position and velocity messages, repeated to 200 MB (corrupted_stream.hpp), with 1% of the bytes replaced by random values
 // (fixed seed), fed in 64 KiB chunks as a file reader would.
 #include <benchmark/benchmark.h>
 
 #include <random>
 
 #include "frontends/vectornav/decoder.hpp"
+#include "tests/bench/corrupted_stream.hpp"
 #include "tests/frontends/vectornav/stream_fixture.hpp"
 
 namespace {
@@ -28,6 +29,7 @@ struct CountingSink : DecodeSink {
 const std::vector<std::uint8_t>& corrupted_log() {
   static const std::vector<std::uint8_t> log = [] {
     std::vector<std::uint8_t> bytes = navfuse::frontends::vectornav::test::make_vn_stream(kEpochs, false).bytes;
+    navfuse::bench::repeat_to(bytes, navfuse::bench::kCorruptedStreamBytes);
     std::mt19937_64 rng(kSeed);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (auto& b : bytes)

@@ -163,6 +163,30 @@ TEST(FeRobustness, AbsurdPayloadSizesDoNotStallTheStream) {
   }
 }
 
+TEST(FeRobustness, UnknownTypeClaimingMoreThanItsBoundIsRejectedBeforeAnyCrc) {
+  // A corrupted header naming a type the catalogue does not know, with 1 MiB of payload: the
+  // framer must not wait for (and CRC) a megabyte before it resynchronises (issue 15.11).
+  constexpr std::uint16_t kUnknownType = 0x7FF0;
+  ASSERT_FALSE(message_name(kUnknownType).has_value());
+  ASSERT_EQ(max_payload_size(kUnknownType), kMaxUnknownPayloadSize);
+  const Stream s = sample_stream(2);
+  for (const std::uint32_t size : {kMaxUnknownPayloadSize + 1, std::uint32_t{1} << 20}) {
+    std::vector<std::uint8_t> b(kHeaderSize, 0);
+    b[0] = kSync0;
+    b[1] = kSync1;
+    b[kMessageTypeOffset] = static_cast<std::uint8_t>(kUnknownType);
+    b[kMessageTypeOffset + 1] = static_cast<std::uint8_t>(kUnknownType >> 8);
+    for (int i = 0; i < 4; ++i) b[kPayloadSizeOffset + i] = static_cast<std::uint8_t>(size >> (8 * i));
+    b.insert(b.end(), s.bytes.begin(), s.bytes.end());
+    FusionEngineDecoder d;
+    test::CollectingSink sink;
+    d.feed(b, sink);
+    EXPECT_EQ(d.counters().frames, s.frame_sizes.size()) << size;  // before finish(): nothing waited for
+    EXPECT_EQ(d.counters().bad_frames, 1u);
+    EXPECT_EQ(d.counters().skipped_bytes, kHeaderSize);
+  }
+}
+
 TEST(FeRobustness, CorruptedLengthNearTheEndDoesNotHideLaterFrames) {
   // A plausible but wrong payload size in the second frame: the framer waits for bytes that
   // never come; at finish() it rescans and recovers every frame after it.
