@@ -33,7 +33,7 @@ Engine::Engine(const FilterOptions& options)
 void Engine::process(const Measurement& m) {
   const MeasurementKind kind = kind_of(m);
   const MeasurementKindRow& row = kind_row(kind);
-  if (!row.fused) {
+  if (!fuses(kind)) {
     ++stats_.of(kind).ignored;
     return;
   }

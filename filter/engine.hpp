@@ -20,10 +20,10 @@
 //   measurements (exact, not an approximation). Older ones are rejected ("too_late").
 // - Bad inputs (NaN/inf: "nan"; uncertainty <= 0 on a valid axis: "negative_std"; no valid axis
 //   or impossible values: "invalid") are rejected before they reach the state. Kinds the filter
-//   does not use (measurement_kinds.hpp: device solutions, magnetometer, pressure)
-//   are counted as ignored.
+//   does not use (measurement_kinds.hpp: device solutions; magnetometer and pressure unless the
+//   configuration switches them on, FilterOptions::fuses) are counted as ignored.
 // - Modes follow MIP's filter states: Init -> Vertical Gyro (levelled while stationary) -> AHRS
-//   (heading from dual antenna, external heading or FilterOptions::initial_heading_rad) -> Full
+//   (heading from dual antenna, external heading, magnetometer or FilterOptions::initial_heading_rad) -> Full
 //   Navigation (position known; heading from GNSS course above 2 m/s if no other source) ->
 //   Dead Reckoning after gnss_timeout_s without absolute position (kStatusGnssOutage).
 //
@@ -45,6 +45,7 @@
 #include "filter/filter_options.hpp"
 #include "filter/filter_stats.hpp"
 #include "filter/imu_input.hpp"
+#include "filter/measurement_kinds.hpp"
 #include "filter/ring_buffer.hpp"
 
 namespace navfuse::filter {
@@ -61,6 +62,9 @@ class Engine {
   explicit Engine(const FilterOptions& options);
 
   void process(const Measurement& m);
+  // Whether process() fuses this kind: it has a model (measurement_kinds.hpp) and the options
+  // switch it on (FilterOptions::fuses). The rest is counted as ignored.
+  bool fuses(MeasurementKind kind) const { return is_fused(kind) && options_.fuses(kind); }
 
   const NavSolution& solution() const;
   bool solution_valid() const;

@@ -56,6 +56,8 @@ void FilterCore::restart(const FilterOptions& o) {
   stationary = StationaryState{};
   gnss = GnssControlState{};
   odometry = OdometryState{};
+  magnetometer = MagnetometerState{};
+  baro = BaroState{};
   const AdaptationState previous_adaptation = adaptation;
   adaptation = AdaptationState{};
   adaptation.inflations = previous_adaptation.inflations;  // counters survive restarts

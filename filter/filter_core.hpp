@@ -106,6 +106,19 @@ struct OdometryState {
   double last_speed_mps = 0.0;
 };
 
+// Magnetometer control (control/magnetometer_control.cpp): the modelled declination and where.
+struct MagnetometerState {
+  std::optional<double> model_declination_rad;
+  double lat_rad = 0.0, lon_rad = 0.0;  // where it was computed
+};
+
+// Barometer control (control/baro_control.cpp): filter height = pressure altitude + offset.
+struct BaroState {
+  bool anchored = false;
+  double offset_m = 0.0;
+  double anchor_std_m = 0.0;  // the filter's height std when anchored
+};
+
 struct ModeState {
   NavMode mode = NavMode::kInitializing;
   std::uint32_t reached_mask = 0;  // bit per NavMode value
@@ -140,6 +153,8 @@ struct FilterCore {
   GnssControlState gnss;
   OdometryState odometry;
   AdaptationState adaptation;
+  MagnetometerState magnetometer;
+  BaroState baro;
   ModeState mode;
   RecordHook record;  // forward-pass recording for the smoother; kept across restart()
 

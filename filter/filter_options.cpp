@@ -70,6 +70,18 @@ FilterOptions options_from_config(const navfuse::config::Config& config) {
   o.kinematic_alignment_speed_mps = config.alignment.min_speed_mps.value_or(
       config.platform == Platform::kPedestrian ? kPedestrianAlignmentSpeed_mps
                                                : o.kinematic_alignment_speed_mps);
+  if (config.magnetometer.heading_std_deg) {
+    o.magnetometer.enabled = true;
+    o.magnetometer.heading_std_rad = *config.magnetometer.heading_std_deg * rot::kDegToRad;
+  }
+  if (config.magnetometer.declination_deg) {
+    o.magnetometer.declination_rad = *config.magnetometer.declination_deg * rot::kDegToRad;
+  }
+  o.magnetometer.hard_iron_gauss = vec(config.magnetometer.hard_iron_gauss);
+  if (config.baro.height_std_m) {
+    o.baro.enabled = true;
+    o.baro.height_std_m = *config.baro.height_std_m;
+  }
   if (config.alignment.initial_heading_deg) {
     o.initial_heading_rad = rot::wrap_pi(*config.alignment.initial_heading_deg * rot::kDegToRad);
   }
@@ -86,6 +98,14 @@ double FilterOptions::time_offset_s(MeasurementKind kind) const {
     case MeasurementKind::kVehicleSpeed:
     case MeasurementKind::kWheelTicks: return wheel_time_offset_s;
     default: return 0.0;
+  }
+}
+
+bool FilterOptions::fuses(MeasurementKind kind) const {
+  switch (kind) {
+    case MeasurementKind::kMagnetometer: return magnetometer.enabled;
+    case MeasurementKind::kPressure: return baro.enabled;
+    default: return true;
   }
 }
 

@@ -42,8 +42,33 @@ struct AdaptationOptions {
   double process_noise_gain = 0.25;        // exponent per sample of the scale's adaptation
 };
 
+// Magnetometer heading aiding (control/magnetometer_control.hpp). Off by default: a magnetometer
+// near steel, motors or cables is wrong by tens of degrees, which only the installer can judge.
+struct MagnetometerOptions {
+  bool enabled = false;
+  double heading_std_rad = 5.0 * 3.14159265358979323846 / 180.0;
+  std::optional<double> declination_rad;  // nullopt: GeographicLib's magnetic model, if installed
+  Eigen::Vector3d hard_iron_gauss = Eigen::Vector3d::Zero();  // sensor frame, subtracted
+  // The earth's total field is 0.22-0.67 gauss everywhere (WMM2020 report, fig. 11); a reading
+  // outside [min, max] is disturbed (a car alongside, a motor starting) and is not fused.
+  double min_field_gauss = 0.15;
+  double max_field_gauss = 0.8;
+  // Below this horizontal component (near the magnetic poles, or a badly tilted sensor) the
+  // heading is too noisy to use.
+  double min_horizontal_field_gauss = 0.05;
+};
+
+// Barometric height aiding (control/baro_control.hpp): relative height, anchored to the
+// filter's height at the first fused sample. Off by default.
+struct BaroOptions {
+  bool enabled = false;
+  double height_std_m = 1.0;
+};
+
 struct FilterOptions {
   ImuNoise imu;
+  MagnetometerOptions magnetometer;
+  BaroOptions baro;
   AdaptationOptions adaptation;
   StateSelection states;
 
@@ -118,6 +143,9 @@ struct FilterOptions {
   double gnss_time_offset_s = 0.0;
   double wheel_time_offset_s = 0.0;
   double time_offset_s(MeasurementKind kind) const;
+  // False for the kinds the configuration switched off (magnetometer, pressure unless enabled):
+  // counted as ignored, like kinds the filter never fuses.
+  bool fuses(MeasurementKind kind) const;
 
   // Numerics and timing.
   double covariance_interval_s = 0.05;  // covariance propagated at most this far per step

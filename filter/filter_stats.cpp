@@ -18,6 +18,8 @@ std::string_view to_string(RejectReason reason) {
     case RejectReason::kNoReference: return "no_reference";
     case RejectReason::kNoScale: return "no_scale";
     case RejectReason::kBaselineMismatch: return "baseline_mismatch";
+    case RejectReason::kMagneticDisturbance: return "magnetic_disturbance";
+    case RejectReason::kNoDeclination: return "no_declination";
     case RejectReason::kCount: break;
   }
   return "unknown";

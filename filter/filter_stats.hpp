@@ -25,6 +25,8 @@ enum class RejectReason : std::uint8_t {
   kNoReference,     // a tick count with no earlier count of its stream to difference (first, after a gap)
   kNoScale,         // tick counts while no tick-to-metre scale is configured (wheel.m_per_tick)
   kBaselineMismatch,  // dual-antenna heading after its baseline was found off the course over ground
+  kMagneticDisturbance,  // a magnetometer reading whose strength is not the earth's field
+  kNoDeclination,     // magnetic heading with no declination configured or modelled
   kCount,
 };
 std::string_view to_string(RejectReason reason);

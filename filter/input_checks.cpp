@@ -106,5 +106,19 @@ Reason check_input(const ExternalHeading& m) {
   return std::nullopt;
 }
 
+Reason check_input(const Magnetometer& m) {
+  if (!finite(m.field_gauss)) return RejectReason::kNan;
+  return std::nullopt;
+}
+
+Reason check_input(const Pressure& m) {
+  if (!finite(m.pressure_pa)) return RejectReason::kNan;
+  // Above the Dead Sea's ~107 kPa no static pressure occurs; 0 or less is no pressure at all.
+  if ((m.header.valid & Pressure::kValidPressure) != 0 && !(m.pressure_pa > 0.0 && m.pressure_pa < 120e3)) {
+    return RejectReason::kInvalid;
+  }
+  return std::nullopt;
+}
+
 
 }  // namespace navfuse::filter

@@ -20,5 +20,7 @@ std::optional<RejectReason> check_input(const WheelTicks& m);
 std::optional<RejectReason> check_input(const ExternalPosition& m);
 std::optional<RejectReason> check_input(const ExternalVelocity& m);
 std::optional<RejectReason> check_input(const ExternalHeading& m);
+std::optional<RejectReason> check_input(const Magnetometer& m);
+std::optional<RejectReason> check_input(const Pressure& m);
 
 }  // namespace navfuse::filter

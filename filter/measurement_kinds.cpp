@@ -2,8 +2,10 @@
 
 #include <variant>
 
+#include "filter/control/baro_control.hpp"
 #include "filter/control/external_aiding_control.hpp"
 #include "filter/control/gnss_control.hpp"
+#include "filter/control/magnetometer_control.hpp"
 #include "filter/control/odometry_control.hpp"
 #include "filter/filter_core.hpp"
 #include "filter/input_checks.hpp"
@@ -37,6 +39,8 @@ NAVFUSE_FUSED_KIND(kWheelTicks)
 NAVFUSE_FUSED_KIND(kExternalPosition)
 NAVFUSE_FUSED_KIND(kExternalVelocity)
 NAVFUSE_FUSED_KIND(kExternalHeading)
+NAVFUSE_FUSED_KIND(kMagnetometer)
+NAVFUSE_FUSED_KIND(kPressure)
 #undef NAVFUSE_FUSED_KIND
 #undef NAVFUSE_CHECKED_KIND
 

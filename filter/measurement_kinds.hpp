@@ -65,9 +65,11 @@ inline constexpr MeasurementKindTable kMeasurementKinds{{
      &fuse_kind<MeasurementKind::kExternalHeading>},
     // A device's own solution is for comparison (bench), never an input to ours.
     {MeasurementKind::kDeviceSolution, false, nullptr, nullptr},
-    // No magnetometer or baro model yet.
-    {MeasurementKind::kMagnetometer, false, nullptr, nullptr},
-    {MeasurementKind::kPressure, false, nullptr, nullptr},
+    // Fused only when the configuration switches them on (FilterOptions::fuses).
+    {MeasurementKind::kMagnetometer, true, &check_kind<MeasurementKind::kMagnetometer>,
+     &fuse_kind<MeasurementKind::kMagnetometer>},
+    {MeasurementKind::kPressure, true, &check_kind<MeasurementKind::kPressure>,
+     &fuse_kind<MeasurementKind::kPressure>},
 }};
 
 // True when `table` has one row per kind, row i for kind i, and its columns agree with `fused`.

@@ -3,11 +3,8 @@
 // written as JSON with the DESIGN.md keys (contract): inputs[] {path, format, bytes, frames,
 // bad_frames, skipped_bytes}, measurements {kind: {decoded, used, rejected{reason: n}}},
 // run {wall_s, imu_samples_per_s, modes_reached}. Added beside them: measurements.KIND.innovation
-// {count, mean_nis, mean_nis_per_dim, fraction_above_gate} and filter {covariance_inflations,
-// process_noise_scale, max_process_noise_scale, gnss_recoveries}.
-// bad_frames, skipped_bytes}, measurements {kind: {decoded, used, rejected{reason: n},
-// pending_at_end}},
-// run {wall_s, imu_samples_per_s, modes_reached}.
+// {count, mean_nis, mean_nis_per_dim, fraction_above_gate}, measurements.KIND.pending_at_end and
+// filter {covariance_inflations, process_noise_scale, max_process_noise_scale, gnss_recoveries}.
 #pragma once
 
 #include <array>
@@ -43,6 +40,7 @@ struct KindSummary {
   std::uint64_t decoded = 0;
   std::uint64_t used = 0;
   std::map<std::string, std::uint64_t> rejected;  // ordered: deterministic output
+  std::uint64_t pending = 0;  // held at the end, neither used nor rejected: decoded = used + rejected + pending
   std::optional<InnovationSummary> innovation;    // kinds the filter tried to fuse
 };
 
@@ -52,7 +50,6 @@ struct AdaptationSummary {
   double process_noise_scale = 1.0;  // at the end
   double max_process_noise_scale = 1.0;
   std::uint64_t gnss_recoveries = 0;  // re-anchored to GNSS after sustained rejection
-  std::uint64_t pending = 0;  // held at the end, neither used nor rejected: decoded = used + rejected + pending
 };
 
 struct RunStats {

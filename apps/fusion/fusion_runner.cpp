@@ -25,7 +25,7 @@ void FusionRunner::offer(const Measurement& m, std::int64_t arrival_ns) {
   const MeasurementKind kind = kind_of(m);
   ++counts_.decoded[static_cast<std::size_t>(kind)];
   observer_.on_offered(m);
-  if (const auto reason = gate_.check(m)) {
+  if (const auto reason = gate_.check(m, engine_.fuses(kind))) {
     counts_.count_gated(kind, *reason);
     ++gated_total_;
     return;

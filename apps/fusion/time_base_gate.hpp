@@ -6,8 +6,8 @@
 // its clock to GPS), or when both are the same device's own clock, i.e. the same time source
 // from the same input stream. Anything else is rejected with reason "time_base" until a mapping
 // between the clocks exists; navfuse replay has none yet for logs from different devices.
-// Kinds the filter does not fuse (filter/measurement_kinds.hpp: device solutions, magnetometer,
-// pressure, wheel ticks) pass through for counting.
+// Kinds the filter does not fuse (filter/measurement_kinds.hpp: device solutions; magnetometer
+// and pressure unless configured, Engine::fuses) pass through for counting.
 // Only one IMU stream drives the filter: IMU samples of other inputs are rejected as
 // "second_imu".
 #pragma once
@@ -23,8 +23,10 @@ namespace navfuse::apps {
 
 class TimeBaseGate {
  public:
-  // nullopt: pass to the filter; otherwise the rejection reason.
-  std::optional<std::string_view> check(const Measurement& m) {
+  // nullopt: pass to the filter; otherwise the rejection reason. `fused`: whether the filter
+  // fuses this kind with its configuration (Engine::fuses); the kind table's answer if not given.
+  std::optional<std::string_view> check(const Measurement& m) { return check(m, filter::is_fused(kind_of(m))); }
+  std::optional<std::string_view> check(const Measurement& m, bool fused) {
     const MeasurementHeader& h = header_of(m);
     const MeasurementKind kind = kind_of(m);
     if (kind == MeasurementKind::kImu) {
@@ -35,7 +37,7 @@ class TimeBaseGate {
     }
     // Kinds the filter does not fuse pass through and are counted as ignored (the one list of
     // them is the filter's kind table).
-    if (!filter::is_fused(kind) || !imu_stream_) return std::nullopt;
+    if (!fused || !imu_stream_) return std::nullopt;
     const bool same_clock = h.time_source == imu_source_ &&
                             (h.time_source == TimeSource::kGps || h.stream_id == *imu_stream_);
     if (same_clock) return std::nullopt;

@@ -85,6 +85,23 @@ struct AdaptationConfig {
   double max_process_noise_scale = 100.0;  // 1: data-sheet noise only, no adaptation of Q
 };
 
+// Magnetometer heading aiding (filter/control/magnetometer_control.hpp). Off unless a heading
+// std is given: a magnetometer near steel or motors is wrong by tens of degrees, so fusing it is
+// the user's decision for the installation.
+struct MagnetometerConfig {
+  std::optional<double> heading_std_deg;  // 1-sigma of the magnetic heading; unset: not fused
+  // Magnetic declination (east positive). Unset: GeographicLib's magnetic model at the current
+  // position when its data is installed (geographiclib-get-magnetic), else not fused.
+  std::optional<double> declination_deg;
+  Vec3 hard_iron_gauss{0, 0, 0};  // constant field of the installation, sensor frame, subtracted
+};
+
+// Barometric height aiding (filter/control/baro_control.hpp): relative height only, anchored to
+// the filter's height when first fused. Off unless a height std is given.
+struct BaroConfig {
+  std::optional<double> height_std_m;  // 1-sigma of the pressure height; unset: not fused
+};
+
 struct OutputConfig {
   double rate_hz = 100;  // pose output rate (0 = every IMU sample)
 };
@@ -99,6 +116,8 @@ struct Config {
   WheelConfig wheel;
   AlignmentConfig alignment;
   AdaptationConfig adaptation;
+  MagnetometerConfig magnetometer;
+  BaroConfig baro;
   OutputConfig output;
 };
 

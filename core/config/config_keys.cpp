@@ -49,6 +49,16 @@ constexpr ValueRange kStdScale{0.0, 1000.0, true};
 constexpr ValueRange kAdaptationWindowS{0.1, 60.0};
 constexpr ValueRange kRatio{1.0, 1e6};
 
+// Magnetic heading noise: above 0, at most 180 deg (beyond it the heading says nothing).
+constexpr ValueRange kHeadingStdDeg{0.0, 180.0, true};
+// Declination: -180..180 deg covers the whole globe, poles included.
+constexpr ValueRange kDeclinationDeg{-180.0, 180.0};
+// The earth's field is 0.25-0.65 gauss; a hard-iron offset beyond 10 gauss is a unit slip
+// (uT or nT for gauss) or a sensor that saturates anyway.
+constexpr ValueRange kHardIronGauss{-10.0, 10.0};
+// Pressure height noise: above 0, at most 1000 m (beyond it, leave the barometer out).
+constexpr ValueRange kBaroStdM{0.0, 1000.0, true};
+
 const KeyBinding kKeys[] = {
     NAVFUSE_CONFIG_KEY(platform, kAny,
                        "generic | land | pedestrian | airborne | marine: which motion constraints apply"),
@@ -102,6 +112,14 @@ const KeyBinding kKeys[] = {
                        "median NIS per dimension that re-inflates P (3: innovations 1.7x their std)"),
     NAVFUSE_CONFIG_KEY(adaptation.max_process_noise_scale, kRatio,
                        "largest multiplier on the IMU noise variances (1: data sheet only)"),
+    NAVFUSE_CONFIG_KEY(magnetometer.heading_std_deg, kHeadingStdDeg,
+                       "magnetic heading noise, 1 sigma (deg; ~: magnetometer not fused)"),
+    NAVFUSE_CONFIG_KEY(magnetometer.declination_deg, kDeclinationDeg,
+                       "magnetic declination, east positive (deg; ~: GeographicLib magnetic model if installed)"),
+    NAVFUSE_CONFIG_KEY(magnetometer.hard_iron_gauss, kHardIronGauss,
+                       "installation's constant field, subtracted, sensor frame (gauss)"),
+    NAVFUSE_CONFIG_KEY(baro.height_std_m, kBaroStdM,
+                       "pressure height noise, 1 sigma (m; ~: barometer not fused)"),
     NAVFUSE_CONFIG_KEY(output.rate_hz, kNonNegative, "pose output rate (Hz, 0 = every IMU sample)"),
 };
 

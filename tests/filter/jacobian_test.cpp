@@ -26,10 +26,12 @@
 #include "core/geodesy/geodesy.hpp"
 #include "core/geodesy/wgs84.hpp"
 #include "core/rotation/rotation.hpp"
+#include "filter/measurements/baro_height.hpp"
 #include "filter/measurements/external_aiding.hpp"
 #include "filter/measurements/gnss_heading.hpp"
 #include "filter/measurements/gnss_position.hpp"
 #include "filter/measurements/gnss_velocity.hpp"
+#include "filter/measurements/magnetic_heading.hpp"
 #include "filter/measurements/nonholonomic.hpp"
 #include "filter/measurements/wheel_speed.hpp"
 #include "filter/measurements/wheel_ticks.hpp"
@@ -203,6 +205,12 @@ std::vector<Model> models(const TestPoint& p) {
   eh.header.valid = ExternalHeading::kValidHeading;
   eh.heading_rad = -2.9;
   eh.std_rad = 0.02;
+  // A steep field (inclination ~60 deg), so roll and pitch errors enter the magnetic heading.
+  const Eigen::Vector3d field_b(0.21, -0.12, 0.41);
+  const double baro_height_m = x.height_m + 3.0;
+  // The point model's neglected velocity-over-shift term, down row only (row 0 of the baro row).
+  std::vector<NeglectedTerm> baro_terms;
+  for (NeglectedTerm t : kPointNeglected) baro_terms.push_back({0, 1, t.first_col, t.cols, t.max_abs, t.reason});
   const SpeedReading speed{12.0, 0.05};
   const Eigen::Vector3d mean_raw_rate(1e-4, -2e-4, 5e-5);
 
@@ -238,6 +246,10 @@ std::vector<Model> models(const TestPoint& p) {
       {"external_velocity_vehicle", [=](const StateView& s) { return external_velocity_observation(s, ev_body); },
        body_velocity},
       {"external_heading", [=](const StateView& s) { return external_heading_observation(s, eh); }, {}, true},
+      {"magnetic_heading", [=](const StateView& s) { return magnetic_heading_observation(s, field_b, 0.2, 0.05); },
+       list(kMagneticHeadingNeglected), true},
+      {"baro_height", [=](const StateView& s) { return baro_height_observation(s, baro_height_m, 1.0); },
+       baro_terms},
       {"wheel_speed", [=](const StateView& s) { return wheel_speed_observation(s, speed, wheel_lever); },
        speed_terms},
       {"wheel_ticks",

@@ -27,17 +27,27 @@ constexpr MeasurementKindTable fused_without_check() {
 static_assert(!covers_every_kind(fused_without_check()), "a fused kind needs its input check");
 
 TEST(MeasurementKinds, FusedKindsAreTheOnesTheFilterHasModelsFor) {
-  // DESIGN.md: device solutions are for comparison; the filter has no magnetometer or baro
-  // model. Wheel ticks are fused since issue 17 (measurements/wheel_ticks.hpp).
-  for (MeasurementKind k : {MeasurementKind::kDeviceSolution,
-                            MeasurementKind::kMagnetometer, MeasurementKind::kPressure, MeasurementKind::kCount}) {
+  // DESIGN.md: device solutions are for comparison. Wheel ticks are fused since issue 17
+  // (measurements/wheel_ticks.hpp), magnetometer and pressure too, when configured.
+  for (MeasurementKind k : {MeasurementKind::kDeviceSolution, MeasurementKind::kCount}) {
     EXPECT_FALSE(is_fused(k)) << to_string(k);
+  }
+  Engine off{FilterOptions{}};
+  FilterOptions on_options;
+  on_options.magnetometer.enabled = true;
+  on_options.baro.enabled = true;
+  Engine on{on_options};
+  for (MeasurementKind k : {MeasurementKind::kMagnetometer, MeasurementKind::kPressure}) {
+    EXPECT_TRUE(is_fused(k)) << to_string(k);
+    EXPECT_FALSE(off.fuses(k)) << to_string(k) << ": off unless configured";
+    EXPECT_TRUE(on.fuses(k)) << to_string(k);
   }
   for (MeasurementKind k : {MeasurementKind::kImu, MeasurementKind::kGnssPosition, MeasurementKind::kGnssVelocity,
                             MeasurementKind::kGnssHeading, MeasurementKind::kWheelSpeed,
                             MeasurementKind::kVehicleSpeed, MeasurementKind::kWheelTicks,
                             MeasurementKind::kExternalPosition,
-                            MeasurementKind::kExternalVelocity, MeasurementKind::kExternalHeading}) {
+                            MeasurementKind::kExternalVelocity, MeasurementKind::kExternalHeading,
+                            MeasurementKind::kMagnetometer, MeasurementKind::kPressure}) {
     EXPECT_TRUE(is_fused(k)) << to_string(k);
   }
   EXPECT_EQ(kind_row(MeasurementKind::kGnssHeading).name(), "gnss_heading");

@@ -90,13 +90,24 @@ TEST(FusionRunner, KindsTheFilterDoesNotFuseAreIgnoredWhateverTheirClock) {
   Recorder rec;
   FusionRunner runner(filter::FilterOptions{}, options(0.0), rec);
   runner.offer(still_imu(kStartNs));
-  Pressure baro;  // not fused (filter/measurement_kinds.hpp), on another device's clock
+  Pressure baro;  // not fused unless configured (FilterOptions::fuses), on another device's clock
   baro.header = {kStartNs, TimeSource::kDeviceMonotonic, 1, Pressure::kValidPressure};
   runner.offer(baro);
   Summary s;
   runner.fill_summary(s, 1.0);
   EXPECT_EQ(rejected(s, MeasurementKind::kPressure, "time_base"), 0u) << "the gate and the filter share one list";
   EXPECT_EQ(rejected(s, MeasurementKind::kPressure, "ignored"), 1u);
+
+  // Switched on, the same pressure is one the filter would fuse at a wrong time: gated.
+  filter::FilterOptions with_baro;
+  with_baro.baro.enabled = true;
+  Recorder rec2;
+  FusionRunner fusing(with_baro, options(0.0), rec2);
+  fusing.offer(still_imu(kStartNs));
+  fusing.offer(baro);
+  Summary s2;
+  fusing.fill_summary(s2, 1.0);
+  EXPECT_EQ(rejected(s2, MeasurementKind::kPressure, "time_base"), 1u);
 }
 
 TEST(FusionRunner, RejectedImuSampleIsNoEpoch) {
