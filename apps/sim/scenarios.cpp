@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "apps/sim/reality_scenarios.hpp"
 #include "core/rotation/rotation.hpp"
 
 namespace navfuse::sim {
@@ -104,8 +105,10 @@ TrajectorySpec nine_minute_drive() {
 }
 
 std::vector<std::string_view> scenario_names() {
-  return {"static_start", "drive_outage", "rtk_drive",    "drive_short",
-          "delayed_gnss", "outliers",     "dual_antenna", "drive_9min"};
+  std::vector<std::string_view> names = {"static_start", "drive_outage", "rtk_drive",    "drive_short",
+                                         "delayed_gnss", "outliers",     "dual_antenna", "drive_9min"};
+  for (std::string_view n : reality_scenario_names()) names.push_back(n);
+  return names;
 }
 
 std::optional<Scenario> find_scenario(std::string_view name) {
@@ -151,7 +154,7 @@ std::optional<Scenario> find_scenario(std::string_view name) {
     return s;
   }
   if (name == "drive_9min") return base_scenario("drive_9min", nine_minute_drive());
-  return std::nullopt;
+  return find_reality_scenario(name);
 }
 
 Scenario make_scenario(std::string_view name) {

@@ -14,6 +14,8 @@
 //                 at t = 900 s, no outage.
 //   dual_antenna  drive_short with a 1.5 m dual-antenna baseline heading.
 //   drive_9min    the first 540 s of the reference drive, GNSS throughout (replay throughput benchmark).
+//   vibration_drive, rtk_fix_changes, urban_multipath, real_drive: real-drive effects, see
+//                 reality_scenarios.hpp.
 #pragma once
 
 #include <optional>
