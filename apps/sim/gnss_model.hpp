@@ -44,7 +44,7 @@ GnssNoise default_gnss_noise(GnssFixType fix);
 // RTK float 90 % of the variance correlated over 60 s (the float ambiguities converge slowly, so
 // the float error is a slowly wandering bias; fixing snaps it to the truth: the step a filter must
 // absorb at a float-to-fixed transition); DGNSS/SBAS and standalone 80 % correlated over 60 s /
-// 120 s (residual ionosphere, troposphere, orbit and clock errors; Groves §9.4). One correlated
+// 120 s (residual ionosphere, troposphere, orbit and clock errors; Groves §9.3). One correlated
 // state per receiver scaled by the fix type's sigma, so the error is continuous within a fix type
 // and steps when the type (and its sigma) changes.
 GnssNoise receiver_fix_noise(GnssFixType fix);

@@ -14,13 +14,13 @@
 //    above half the output rate aliases to a lower frequency.
 //
 // The vibration is a small oscillation of the sensor about its mount (millimetres): it does not
-// move the truth trajectory, only the sensor output. Levels for a car body: ISO 2631-1:1997
-// Annex C rates whole-body vibration below 0.315 m/s^2 RMS as "not uncomfortable" and
-// 0.315-0.63 m/s^2 as "a little uncomfortable", the range of a passenger car on ordinary roads;
-// a roof or trunk mount without damping sees at least that. car_vibration() uses 0.1 m/s^2 at
-// idle rising to 0.3 m/s^2 at 20 m/s: 14-42 times the industrial grade's VRW of 0.03 m/s/sqrt(h)
-// at 200 Hz (0.0071 m/s^2 per sample), the 10-40x noise inflation real-drive filters need
-// (issue 14).
+// move the truth trajectory, only the sensor output. Levels: ISO 2631-1:1997 Annex C rates
+// whole-body vibration in vehicles below 0.315 m/s^2 RMS as "not uncomfortable" and
+// 0.315-0.63 m/s^2 as "a little uncomfortable"; car_vibration() stays at or below the first
+// band (0.1 m/s^2 at idle rising to 0.3 m/s^2 at 20 m/s), where a car on an ordinary road is
+// meant to be. That is 14-42 times the industrial grade's VRW of 0.03 m/s/sqrt(h) at 200 Hz
+// (0.0071 m/s^2 per sample), the order of the 10-40x noise inflation a public filter needed on
+// a real roof-mounted drive (issue 14).
 #pragma once
 
 #include <cstdint>
