@@ -9,6 +9,8 @@
 // it by a constant offset: horizontal magnitude log-uniform in [min_offset_m, max_offset_m] (so
 // decimetre and metre jumps are equally common per decade), uniform azimuth, and a vertical
 // part uniform in +-vertical_ratio times the horizontal magnitude. Events do not overlap.
+// Velocity is left alone: Doppler-derived velocity is far less affected by a reflected path than
+// the code ranges (a constant extra path length has no Doppler).
 #pragma once
 
 #include <cstdint>
