@@ -38,6 +38,30 @@ GnssNoise default_gnss_noise(GnssFixType fix) {
   return n;
 }
 
+GnssNoise receiver_fix_noise(GnssFixType fix) {
+  GnssNoise n = default_gnss_noise(fix);
+  switch (fix) {
+    case GnssFixType::kRtkFixed:
+      n.correlated_fraction = 0.0;
+      break;
+    case GnssFixType::kRtkFloat:
+    case GnssFixType::kPpp:
+      n.correlated_fraction = 0.9;
+      n.correlation_time_s = 60.0;
+      break;
+    case GnssFixType::kDgnss:
+    case GnssFixType::kSbas:
+      n.correlated_fraction = 0.8;
+      n.correlation_time_s = 60.0;
+      break;
+    default:
+      n.correlated_fraction = 0.8;
+      n.correlation_time_s = 120.0;
+      break;
+  }
+  return n;
+}
+
 GnssSpec gnss_standalone(double rate_hz) {
   GnssSpec s;
   s.rate_hz = rate_hz;
@@ -66,7 +90,10 @@ Eigen::Vector3d lever_arm_velocity_ned(const TruthSample& truth, const Eigen::Ve
 }
 
 GnssModel::GnssModel(const GnssSpec& spec, std::uint64_t seed)
-    : spec_(spec), rng_(seed, RandomStream::kGnss), heading_rng_(seed, RandomStream::kHeading) {
+    : spec_(spec),
+      rng_(seed, RandomStream::kGnss),
+      heading_rng_(seed, RandomStream::kHeading),
+      multipath_(multipath_events(spec.multipath, seed)) {
   if (spec_.enabled) {
     if (!(spec_.rate_hz > 0.0) || !std::isfinite(spec_.rate_hz)) {
       throw std::invalid_argument("gnss.rate_hz must be positive");
@@ -138,6 +165,7 @@ GnssModel::Epoch GnssModel::make_epoch(const TruthSample& truth, double t_s, Gns
   for (const GnssJump& jump : spec_.jumps) {
     if (t_s >= jump.time_s) offset_ned += jump.offset_ned_m;
   }
+  offset_ned += multipath_offset(multipath_, t_s, &epoch.multipath);
 
   const geo::Llh antenna = lever_arm_position(truth, spec_.lever_arm_m);
   const geo::Llh reported = geo::llh_offset(antenna, offset_ned);

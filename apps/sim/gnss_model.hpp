@@ -19,7 +19,9 @@
 
 #include <Eigen/Core>
 
+#include "apps/sim/gnss_multipath.hpp"
 #include "apps/sim/random.hpp"
+#include "apps/sim/time_interval.hpp"
 #include "apps/sim/trajectory.hpp"
 #include "core/measurements/measurements.hpp"
 
@@ -37,13 +39,15 @@ struct GnssNoise {
 // Typical figures per fix type: standalone (kFix3D) 1.5 m / 3 m, DGNSS/SBAS 0.5 m / 1 m,
 // RTK float 0.3 m / 0.5 m, RTK fixed 0.02 m / 0.03 m, PPP 0.1 m / 0.2 m.
 GnssNoise default_gnss_noise(GnssFixType fix);
-
-// Time intervals are seconds since the scenario start, half-open [start_s, end_s).
-struct TimeInterval {
-  double start_s = 0.0;
-  double end_s = 0.0;
-  bool contains(double t_s) const { return t_s >= start_s && t_s < end_s; }
-};
+// The same reported std devs with the error correlation a real receiver's solution has per fix
+// type, for drives whose fix type changes: RTK fixed white (carrier-phase noise, centimetres);
+// RTK float 90 % of the variance correlated over 60 s (the float ambiguities converge slowly, so
+// the float error is a slowly wandering bias; fixing snaps it to the truth: the step a filter must
+// absorb at a float-to-fixed transition); DGNSS/SBAS and standalone 80 % correlated over 60 s /
+// 120 s (residual ionosphere, troposphere, orbit and clock errors; Groves §9.3). One correlated
+// state per receiver scaled by the fix type's sigma, so the error is continuous within a fix type
+// and steps when the type (and its sigma) changes.
+GnssNoise receiver_fix_noise(GnssFixType fix);
 
 // A different fix type (and its noise) over an interval, e.g. RTK dropping to float.
 struct GnssFixInterval {
@@ -76,6 +80,8 @@ struct GnssSpec {
   double glitch_fraction = 0.0;
   double glitch_offset_m = 50.0;
   std::vector<GnssJump> jumps;
+  // Short-lived multipath offsets, covariance unchanged (gnss_multipath.hpp).
+  MultipathSpec multipath{};
 
   // Dual-antenna heading (GnssHeading): azimuth/elevation of the baseline from the primary to the
   // secondary antenna, with white noise of the given std (reported as such).
@@ -107,6 +113,7 @@ class GnssModel {
   struct Epoch {
     bool has_position = false, has_velocity = false, has_heading = false;
     bool glitched = false;  // this fix carries a glitch displacement
+    bool multipath = false;  // this fix carries a multipath offset
   };
   Epoch make_epoch(const TruthSample& truth, double t_s, GnssPosition& pos, GnssVelocity& vel,
                    GnssHeading& heading);
@@ -117,6 +124,7 @@ class GnssModel {
   std::int64_t latency_ns_ = 0;
   Rng rng_;
   Rng heading_rng_;
+  std::vector<MultipathEvent> multipath_;
   Eigen::Vector3d gm_unit_ = Eigen::Vector3d::Zero();  // correlated error / its sigma, per axis
   std::int64_t last_epoch_ns_ = 0;
   bool have_last_epoch_ = false;

@@ -37,7 +37,7 @@ Eigen::Vector3d inertial_delta_theta(const TruthSample& a, const TruthSample& b)
 }
 
 ImuModel::ImuModel(const ImuSpec& spec, std::uint64_t seed)
-    : spec_(spec), errors_(spec.errors, seed) {
+    : spec_(spec), errors_(spec.errors, seed), vibration_(spec.vibration, seed) {
   if (!(spec_.rate_hz > 0.0) || !std::isfinite(spec_.rate_hz)) {
     throw std::invalid_argument("imu.rate_hz must be positive");
   }
@@ -87,6 +87,8 @@ void ImuModel::make_sample(const TruthSample* nodes, ImuSample& out) {
   // Into the sensor frame (x_s = C_sv x_v), where the errors live.
   Eigen::Vector3d gyro = c_vs_.transpose() * gyro_b;
   Eigen::Vector3d accel = c_vs_.transpose() * accel_b;
+  // Vibration is motion the sensor really feels: scale factors and saturation apply to it.
+  vibration_.apply(increments, dt, end.speed_mps, gyro, accel);
   out.saturation = errors_.apply(increments, dt, gyro, accel);
   if (spec_.frame == SensorFrame::kVehicle) {
     gyro = c_vs_ * gyro;

@@ -19,6 +19,7 @@
 
 #include "apps/sim/imu_error_model.hpp"
 #include "apps/sim/trajectory.hpp"
+#include "apps/sim/vibration_model.hpp"
 #include "core/measurements/measurements.hpp"
 
 namespace navfuse::sim {
@@ -36,6 +37,7 @@ struct ImuSpec {
   Eigen::Vector3d mounting_rpy_deg = Eigen::Vector3d::Zero();  // sensor -> vehicle, 3-2-1 (DESIGN.md)
   ImuErrorSpec errors{};
   int substeps = 4;  // truth nodes per IMU interval for the delta-v quadrature (even, >= 2)
+  VibrationSpec vibration{};  // engine and road vibration (off by default)
 };
 
 class ImuModel {
@@ -61,6 +63,7 @@ class ImuModel {
   std::int64_t period_ns_ = 0;
   Eigen::Matrix3d c_vs_ = Eigen::Matrix3d::Identity();
   ImuErrorModel errors_;
+  VibrationModel vibration_;
 };
 
 // Exact attitude increment of the body w.r.t. inertial space between two truth samples (see the

@@ -21,6 +21,8 @@ enum class RandomStream : std::uint64_t {
   kGnss = 2,
   kWheel = 3,
   kHeading = 4,
+  kVibration = 5,  // apps/sim/vibration_model.hpp
+  kMultipath = 6,  // apps/sim/gnss_multipath.hpp
 };
 
 class Rng {

@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "apps/sim/reality_scenarios.hpp"
 #include "core/rotation/rotation.hpp"
 
 namespace navfuse::sim {
@@ -114,8 +115,10 @@ TrajectorySpec eight_hour_drive() {
 }
 
 std::vector<std::string_view> scenario_names() {
-  return {"static_start", "drive_outage", "rtk_drive",    "drive_short",
-          "delayed_gnss", "outliers",     "dual_antenna", "drive_9min", "drive_8h"};
+  std::vector<std::string_view> names = {"static_start", "drive_outage", "rtk_drive",  "drive_short", "delayed_gnss",
+                                         "outliers",     "dual_antenna", "drive_9min", "drive_8h"};
+  for (std::string_view n : reality_scenario_names()) names.push_back(n);
+  return names;
 }
 
 std::optional<Scenario> find_scenario(std::string_view name) {
@@ -162,7 +165,7 @@ std::optional<Scenario> find_scenario(std::string_view name) {
   }
   if (name == "drive_9min") return base_scenario("drive_9min", nine_minute_drive());
   if (name == "drive_8h") return base_scenario("drive_8h", eight_hour_drive());
-  return std::nullopt;
+  return find_reality_scenario(name);
 }
 
 Scenario make_scenario(std::string_view name) {

@@ -16,6 +16,8 @@
 //   drive_9min    the first 540 s of the reference drive, GNSS throughout (replay throughput benchmark).
 //   drive_8h      the reference drive 24 times over, GNSS throughout: a ~1 GB log for the memory
 //                 benchmark of replay and bench (tests/bench/bench_memory.sh).
+//   vibration_drive, rtk_fix_changes, urban_multipath, real_drive: real-drive effects, see
+//                 reality_scenarios.hpp.
 #pragma once
 
 #include <optional>

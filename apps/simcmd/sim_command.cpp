@@ -4,6 +4,8 @@
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "apps/common/command_error.hpp"
@@ -184,8 +186,9 @@ void add_sim_command(CLI::App& root, int& exit_code) {
   auto args = std::make_shared<Args>();
   SimOptions& o = args->options;
   CLI::App* sub = root.add_subcommand("sim", "Simulate a scenario and write it as a device log");
-  sub->add_option("--scenario", o.scenario, "Scenario name (static_start, drive_outage, rtk_drive, drive_short, ...)")
-      ->required();
+  std::string scenarios;
+  for (std::string_view n : sim::scenario_names()) scenarios += (scenarios.empty() ? "" : ", ") + std::string(n);
+  sub->add_option("--scenario", o.scenario, "Scenario name: " + scenarios)->required();
   sub->add_option("--format", o.format, "Device protocol of the log")
       ->required()
       ->check(CLI::IsMember(writable_formats()));
