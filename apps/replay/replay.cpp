@@ -1,6 +1,7 @@
 #include "apps/replay/replay.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -13,12 +14,16 @@
 #include "apps/output/csv_pose_writer.hpp"
 #include "apps/output/innovation_csv_writer.hpp"
 #include "apps/output/encoded_file_writer.hpp"
+#include "apps/output/output_file.hpp"
 #include "apps/output/output_paths.hpp"
 #include "apps/output/pose_output_thread.hpp"
 #include "apps/output/pose_outputs.hpp"
 #include "apps/fusion/fusion_runner.hpp"
 #include "apps/fusion/log_fusion.hpp"
 #include "apps/fusion/measurement_merger.hpp"
+#include "apps/replay/calibration_collector.hpp"
+#include "apps/replay/calibration_hook.hpp"
+#include "apps/replay/calibration_output.hpp"
 #include "apps/replay/smoothed_pass.hpp"
 #include "apps/replay/truth_accuracy.hpp"
 #include "filter/engine.hpp"
@@ -58,6 +63,11 @@ class ReplayObserver final : public FusionObserver {
     if (writer_) writer_->post(epoch);
     if (accuracy_ && epoch.pose_due) accuracy_->add(epoch.solution);
   }
+  // smooth --calibration-out: the measurements the filter takes, for the calibration.
+  void collect_for_calibration(CalibrationCollector* collector) { collector_ = collector; }
+  void on_fused(const Measurement& m) override {
+    if (collector_ != nullptr) collector_->add(m);
+  }
   // Inside the timed run: the summary's rate includes writing the last epochs.
   void on_finished() override {
     if (writer_) writer_->finish();
@@ -68,6 +78,7 @@ class ReplayObserver final : public FusionObserver {
   std::optional<GnssOutagePlan> plan_;  // until handed to accuracy_
   const FusionRunner* runner_ = nullptr;
   std::optional<PoseOutputThread> writer_;
+  CalibrationCollector* collector_ = nullptr;
 };
 
 // The one-line reason a replay produced nothing useful, or "" when it did (see ReplayResult).
@@ -110,11 +121,13 @@ std::string report_accuracy(const TruthAccuracy& accuracy, const std::string& tr
 // smoother did goes into the summary.
 void smooth_record(filter::ForwardRecorder& record, const FusionRunner& runner, const filter::FilterOptions& o,
                    double rate_hz, const std::optional<GnssOutagePlan>& outages, PoseOutputs& outputs,
-                   TruthAccuracy* accuracy, ReplayResult& result) {
+                   TruthAccuracy* accuracy, CalibrationCollector* collector, ReplayResult& result) {
   record.close(runner.engine().core());
   const TimeSource time_source = runner.first_imu() ? runner.first_imu()->time_source : TimeSource::kUnknown;
   if (accuracy != nullptr && outages && runner.first_imu()) accuracy->use_outage_plan(*outages, runner.first_imu()->time_ns);
-  const SmoothedPassResult pass = write_smoothed(record, o, time_source, rate_hz, outputs, accuracy);
+  std::function<void(const filter::SmoothedSample&)> also;
+  if (collector != nullptr) also = [collector](const filter::SmoothedSample& sample) { collector->add(sample); };
+  const SmoothedPassResult pass = write_smoothed(record, o, time_source, rate_hz, outputs, accuracy, also);
   const filter::SmootherStats& s = pass.stats;
   result.summary.extra["smoother"] = {{"record_mb", static_cast<double>(record.bytes()) / 1e6},
                                       {"records_replaced", record.replaced()},
@@ -133,6 +146,19 @@ void smooth_record(filter::ForwardRecorder& record, const FusionRunner& runner, 
        << " records replaced by re-propagation); " << pass.poses << " smoothed poses in " << pass.wall_s << " s\n";
   result.smoother_text = text.str();
   result.poses = pass.poses;
+}
+
+// --calibration-out: the calibration over the collected log, its table into the result and
+// summary, the calibrated configuration to the file.
+void calibrate_log(const CalibrationCollector& collector, const config::Config& config, const std::string& path,
+                   ReplayResult& result) {
+  const calib::CalibrationResult r = calibration_solver()(collector.log());
+  result.summary.extra["calibration"] = calibration_json(r);
+  result.calibration_text = calibration_table(r);
+  if (r.epochs == 0 || r.iterations == 0) throw CommandError("calibration failed: " + r.message);
+  OutputFile out(path);
+  out.write(calibration_yaml(config, r));
+  out.commit();
 }
 
 }  // namespace
@@ -211,6 +237,13 @@ ReplayResult run_replay(const ReplayOptions& options) {
   if (outages) observer.score_outages(*outages, runner);
   std::unique_ptr<filter::ForwardRecorder> record;
   if (options.smooth) record = record_forward_pass(runner.engine());
+  std::unique_ptr<CalibrationCollector> collector;
+  if (!options.calibration_out.empty()) {
+    if (!options.smooth) throw CommandError("--calibration-out needs `navfuse smooth`");
+    if (!calibration_solver()) throw CommandError("--calibration-out: this build has no calibration solver");
+    collector = std::make_unique<CalibrationCollector>(filter_options);
+    observer.collect_for_calibration(collector.get());
+  }
   std::unique_ptr<InnovationCsvWriter> innovations;
   if (!options.innovations_csv.empty()) {
     innovations = std::make_unique<InnovationCsvWriter>(options.innovations_csv);
@@ -219,7 +252,10 @@ ReplayResult run_replay(const ReplayOptions& options) {
   ReplayResult result;
   result.summary = fuse_log(merger, runner, observer,
                             {.progress_bar = options.progress, .interrupt = options.interrupt});
-  if (record) smooth_record(*record, runner, filter_options, rate_hz, outages, outputs, accuracy.get(), result);
+  if (record) {
+    smooth_record(*record, runner, filter_options, rate_hz, outages, outputs, accuracy.get(), collector.get(), result);
+  }
+  if (collector) calibrate_log(*collector, config, options.calibration_out, result);
   outputs.commit();
   if (innovations) innovations->commit();
 

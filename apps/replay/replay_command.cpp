@@ -39,7 +39,7 @@ int run(ReplayArgs& args) {
   }
   if (!args.quiet) {
     result.summary.print(std::cout, /*decode_only=*/false);
-    std::cout << result.smoother_text;
+    std::cout << result.smoother_text << result.calibration_text;
     std::cout << (args.options.smooth ? "smoothed poses: " : "poses: ") << result.poses << "\n";
     if (const auto it = result.summary.extra.find("lcm"); it != result.summary.extra.end()) {
       std::cout << "lcm: " << (*it)["published"] << " messages published, " << (*it)["failures"] << " failed\n";
@@ -102,12 +102,18 @@ void add_fusion_command(CLI::App& root, int& exit_code, const char* name, const 
   sub->add_flag("--allow-truncated", o.allow_truncated, "Replay an input whose last frame is cut off");
   add_quiet_flag(sub, args->quiet, "summary, accuracy or progress bar");
   if (smooth) {
+    sub->add_option("--calibration-out", o.calibration_out,
+                    "Calibrate lever arm, IMU mounting, IMU time offset, odometer scale and IMU biases over the "
+                    "log (Ceres batch fit from the smoothed solution); write the config with them to this file");
     add_examples(sub, {{"the demo drive smoothed, scored against truth (forward and smoothed), poses to CSV",
                         "navfuse smooth --config data/demo/vn300.yaml data/demo/vn300.vnb data/demo/vn300_wheel.p1log "
                         "--truth data/demo/truth.csv --csv smoothed.csv"},
                        {"30 s GNSS outages every 60 s bridged by the smoother",
                         "navfuse smooth --config data/demo/vn300.yaml data/demo/vn300.vnb --gnss-outage 60:30 "
-                        "--truth data/demo/truth.csv"}});
+                        "--truth data/demo/truth.csv"},
+                       {"calibrate the installation and write it as a config to feed back",
+                        "navfuse smooth --config data/demo/vn300.yaml data/demo/vn300.vnb data/demo/vn300_wheel.p1log "
+                        "--calibration-out calib.yaml"}});
   } else {
     add_examples(sub, {{"the demo drive with its wheel speeds, scored against truth, poses to CSV",
                         "navfuse replay --config data/demo/vn300.yaml data/demo/vn300.vnb data/demo/vn300_wheel.p1log "

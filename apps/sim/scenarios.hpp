@@ -14,6 +14,11 @@
 //                 at t = 900 s, no outage.
 //   dual_antenna  drive_short with a 1.5 m dual-antenna baseline heading.
 //   drive_9min    the first 540 s of the reference drive, GNSS throughout (replay throughput benchmark).
+//   calibration_drive  ~3.7 minutes of turns both ways, speed changes, +-8 deg climbs and +-6 deg road
+//                 camber (what makes lever arm, mounting and time offset observable) with 10 Hz
+//                 RTK-fixed GNSS throughout, the IMU mounted at
+//                 roll 0.3, pitch 1.5, yaw -2.0 deg and its clock 50 ms behind GPS time (stamps
+//                 early by 50 ms): what `navfuse smooth --calibration-out` recovers.
 #pragma once
 
 #include <optional>

@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -27,6 +28,10 @@ struct SimOptions {
   // > 0: the scenario's vehicle speed becomes a vehicle tick counter of this many metres per
   // count (WheelTicks, one channel: FusionEngine VehicleTickInput on --wheel-out).
   double wheel_tick_m = 0.0;
+  // The IMU installation, overriding the scenario's: clock offset (stamps this much before the
+  // true time) and mounting sensor -> vehicle roll, pitch, yaw in degrees.
+  std::optional<double> imu_time_offset_s;
+  std::optional<std::vector<double>> imu_mounting_rpy_deg;
 };
 
 struct SimReport {
