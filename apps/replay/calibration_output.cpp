@@ -43,6 +43,12 @@ std::vector<Row> rows(const calib::CalibrationResult& r) {
     out.push_back({std::string("accel bias ") + axes[i], "mg", r.accel_bias_mps2.value[i] / 9.80665e-3,
                    r.accel_bias_mps2.std[i] / 9.80665e-3});
   }
+  for (int i = 0; i < 3; ++i) {
+    out.push_back({std::string("gyro scale ") + axes[i], "ppm", r.gyro_scale.value[i] * 1e6, r.gyro_scale.std[i] * 1e6});
+  }
+  for (int i = 0; i < 3; ++i) {
+    out.push_back({std::string("accel scale ") + axes[i], "ppm", r.accel_scale.value[i] * 1e6, r.accel_scale.std[i] * 1e6});
+  }
   return out;
 }
 
@@ -85,7 +91,7 @@ std::string calibration_yaml(const config::Config& base, const calib::Calibratio
   }
   if (r.odometer_scale) {
     s << "# The odometer scale has no config key (the filter estimates it online, wheel.initial_scale_std);\n"
-         "# biases are the IMU's over this log, in the sensor frame, for reference.\n";
+         "# IMU biases and scale factors are this log's, sensor frame, for reference.\n";
   }
   s << "# Solve: " << solve_line(r) << "\n";
   s << config::to_yaml(calibrated_config(base, r));
