@@ -90,9 +90,9 @@ std::string calibration_yaml(const config::Config& base, const calib::Calibratio
     s << "#   " << row.name << ": " << number(row.value, 4) << " +- " << number(row.std, 4) << " " << row.unit << "\n";
   }
   if (r.odometer_scale) {
-    s << "# The odometer scale has no config key (the filter estimates it online, wheel.initial_scale_std);\n"
-         "# IMU biases and scale factors are this log's, sensor frame, for reference.\n";
+    s << "# The odometer scale has no config key (the filter estimates it online, wheel.initial_scale_std).\n";
   }
+  s << "# IMU biases and scale factors are this log's, sensor frame, for reference (no config key).\n";
   s << "# Solve: " << solve_line(r) << "\n";
   s << config::to_yaml(calibrated_config(base, r));
   return s.str();
