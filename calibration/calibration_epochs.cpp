@@ -30,6 +30,7 @@ ImuRates imu_rates(const std::vector<ImuSample>& imu, std::size_t i) {
   const ImuSample& s = imu[i];
   double dt = i > 0 ? static_cast<double>(s.header.time_ns - imu[i - 1].header.time_ns) / kNsPerS : s.dt_s;
   if (!(dt > 0.0)) dt = s.dt_s;
+  if (!(dt > 0.0)) return {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.0};  // no interval: nothing to add
   if (s.quantity == ImuQuantity::kIncrements) {
     const double d = s.dt_s > 0.0 ? s.dt_s : dt;
     return {s.gyro / d, s.accel / d, dt};

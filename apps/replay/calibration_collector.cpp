@@ -47,7 +47,9 @@ void CalibrationCollector::add(const Measurement& m) {
             log_.setup.imu_in_vehicle_frame = true;
             log_.setup.mounting_rpy_rad.setZero();
           }
-          log_.imu.push_back(x);
+          // Time order is what the calibration indexes by: a sample that goes back (the filter
+          // rejects it as time_backwards) or repeats a stamp is left out here too.
+          if (log_.imu.empty() || x.header.time_ns > log_.imu.back().header.time_ns) log_.imu.push_back(x);
         } else if constexpr (std::is_same_v<T, GnssPosition>) {
           GnssPosition p = x;
           p.header.time_ns += shift_ns;

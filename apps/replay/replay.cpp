@@ -255,9 +255,10 @@ ReplayResult run_replay(const ReplayOptions& options) {
   if (record) {
     smooth_record(*record, runner, filter_options, rate_hz, outages, outputs, accuracy.get(), collector.get(), result);
   }
-  if (collector) calibrate_log(*collector, config, options.calibration_out, result);
   outputs.commit();
   if (innovations) innovations->commit();
+  // After the smoothed outputs are in place: a log that cannot be calibrated still has them.
+  if (collector) calibrate_log(*collector, config, options.calibration_out, result);
 
   result.imu_samples = runner.imu_samples();
   if (!options.smooth) result.poses = runner.poses();
