@@ -212,6 +212,7 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
     }
   }
   result.mounting_estimated = result.speed_residuals + result.nhc_residuals > 0;
+  result.mounting_is_residual = setup.imu_in_vehicle_frame;
   if (!result.mounting_estimated) problem.SetParameterBlockConstant(g.mount);
 
   ceres::Solver::Options solver;

@@ -22,7 +22,10 @@ struct Estimate1 {
 struct CalibrationResult {
   Estimate3 gnss_lever_arm_m;    // vehicle frame
   Estimate3 mounting_rpy_rad;    // sensor -> vehicle; roll held at the configured value (std 0)
-  bool mounting_estimated = false;  // false: no odometry/NHC saw it, or the IMU is in the vehicle frame
+  bool mounting_estimated = false;  // false: no odometry/NHC saw it
+  // The IMU reported in the vehicle frame (the device's own mounting): the mounting is then a
+  // residual about the vehicle axes, not the config key's sensor -> vehicle rotation.
+  bool mounting_is_residual = false;
   Estimate1 imu_time_offset_s;   // the config key's meaning: added to IMU stamps
   std::optional<Estimate1> odometer_scale;  // measured / true speed; none without wheel speeds
   Estimate3 gyro_bias_rps;       // sensor frame, constant over the log

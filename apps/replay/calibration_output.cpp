@@ -72,7 +72,7 @@ std::string solve_line(const calib::CalibrationResult& r) {
 config::Config calibrated_config(const config::Config& base, const calib::CalibrationResult& r) {
   config::Config c = base;
   for (int i = 0; i < 3; ++i) c.gnss.lever_arm_m[static_cast<std::size_t>(i)] = rounded(r.gnss_lever_arm_m.value[i], 1e-4);
-  if (r.mounting_estimated) {
+  if (r.mounting_estimated && !r.mounting_is_residual) {
     for (int i = 0; i < 3; ++i) {
       c.imu.mounting_rpy_deg[static_cast<std::size_t>(i)] = rounded(r.mounting_rpy_rad.value[i] * rot::kRadToDeg, 1e-4);
     }
@@ -91,6 +91,10 @@ std::string calibration_yaml(const config::Config& base, const calib::Calibratio
   }
   if (r.odometer_scale) {
     s << "# The odometer scale has no config key (the filter estimates it online, wheel.initial_scale_std).\n";
+  }
+  if (r.mounting_is_residual) {
+    s << "# The IMU reports in the vehicle frame (the device applies its own mounting): the mounting above is\n"
+         "# the residual to set in the device, not imu.mounting_rpy_deg (left as configured).\n";
   }
   s << "# IMU biases and scale factors are this log's, sensor frame, for reference (no config key).\n";
   s << "# Solve: " << solve_line(r) << "\n";

@@ -110,10 +110,7 @@ void add_fusion_command(CLI::App& root, int& exit_code, const char* name, const 
                         "--truth data/demo/truth.csv --csv smoothed.csv"},
                        {"30 s GNSS outages every 60 s bridged by the smoother",
                         "navfuse smooth --config data/demo/vn300.yaml data/demo/vn300.vnb --gnss-outage 60:30 "
-                        "--truth data/demo/truth.csv"},
-                       {"calibrate the installation and write it as a config to feed back",
-                        "navfuse smooth --config data/demo/vn300.yaml data/demo/vn300.vnb data/demo/vn300_wheel.p1log "
-                        "--calibration-out calib.yaml"}});
+                        "--truth data/demo/truth.csv"}});
   } else {
     add_examples(sub, {{"the demo drive with its wheel speeds, scored against truth, poses to CSV",
                         "navfuse replay --config data/demo/vn300.yaml data/demo/vn300.vnb data/demo/vn300_wheel.p1log "
