@@ -9,9 +9,11 @@
 #include "apps/bench/bench_command.hpp"
 #include "apps/common/command_error.hpp"
 #include "apps/decode/decode_command.hpp"
+#include "apps/replay/calibration_hook.hpp"
 #include "apps/replay/replay_command.hpp"
 #include "apps/run/run_command.hpp"
 #include "apps/simcmd/sim_command.hpp"
+#include "calibration/calibration_problem.hpp"
 
 int main(int argc, char** argv) {
   // A pipe whose reader went away is a write error each output reports (EPIPE, exit non-zero),
@@ -21,6 +23,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "navfuse 0.1.0");
   int exit_code = 0;
+  // The Ceres calibration behind `smooth --calibration-out` (apps/replay/calibration_hook.hpp).
+  navfuse::apps::set_calibration_solver([](const navfuse::calib::CalibrationLog& log) { return navfuse::calib::calibrate(log); });
   navfuse::apps::add_decode_command(app, exit_code);
   navfuse::apps::add_replay_command(app, exit_code);
   navfuse::apps::add_bench_command(app, exit_code);

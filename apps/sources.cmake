@@ -7,4 +7,5 @@ foreach(part common fusion decode replay run aid simcmd bench output lcm)
 endforeach()
 
 add_executable(navfuse main.cpp)
-target_link_libraries(navfuse PRIVATE navfuse_apps navfuse_build_flags)
+# Ceres comes in through navfuse_calibration, linked here only (apps/replay/calibration_hook.hpp).
+target_link_libraries(navfuse PRIVATE navfuse_apps navfuse_calibration navfuse_build_flags)

@@ -1,6 +1,7 @@
 #include "apps/replay/replay.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -14,12 +15,16 @@
 #include "apps/output/csv_pose_writer.hpp"
 #include "apps/output/innovation_csv_writer.hpp"
 #include "apps/output/encoded_file_writer.hpp"
+#include "apps/output/output_file.hpp"
 #include "apps/output/output_paths.hpp"
 #include "apps/output/pose_output_thread.hpp"
 #include "apps/output/pose_outputs.hpp"
 #include "apps/fusion/fusion_runner.hpp"
 #include "apps/fusion/log_fusion.hpp"
 #include "apps/fusion/measurement_merger.hpp"
+#include "apps/replay/calibration_collector.hpp"
+#include "apps/replay/calibration_hook.hpp"
+#include "apps/replay/calibration_output.hpp"
 #include "apps/replay/smoothed_pass.hpp"
 #include "apps/replay/truth_accuracy.hpp"
 #include "filter/engine.hpp"
@@ -65,6 +70,11 @@ class ReplayObserver final : public FusionObserver {
   // Poses written in a navigating mode (counted only when there are writers: else the runner
   // fills no solution).
   std::uint64_t navigating_poses() const { return navigating_poses_; }
+  // smooth --calibration-out: the measurements the filter takes, for the calibration.
+  void collect_for_calibration(CalibrationCollector* collector) { collector_ = collector; }
+  void on_fused(const Measurement& m) override {
+    if (collector_ != nullptr) collector_->add(m);
+  }
   // Inside the timed run: the summary's rate includes writing the last epochs.
   void on_finished() override {
     if (writer_) writer_->finish();
@@ -75,6 +85,7 @@ class ReplayObserver final : public FusionObserver {
   std::optional<GnssOutagePlan> plan_;  // until handed to accuracy_
   const FusionRunner* runner_ = nullptr;
   std::optional<PoseOutputThread> writer_;
+  CalibrationCollector* collector_ = nullptr;
   std::uint64_t navigating_poses_ = 0;
 };
 
@@ -127,11 +138,13 @@ std::string report_accuracy(const TruthAccuracy& accuracy, const std::string& tr
 // smoother did goes into the summary.
 void smooth_record(filter::ForwardRecorder& record, const FusionRunner& runner, const filter::FilterOptions& o,
                    double rate_hz, const std::optional<GnssOutagePlan>& outages, PoseOutputs& outputs,
-                   TruthAccuracy* accuracy, ReplayResult& result) {
+                   TruthAccuracy* accuracy, CalibrationCollector* collector, ReplayResult& result) {
   record.close(runner.engine().core());
   const TimeSource time_source = runner.first_imu() ? runner.first_imu()->time_source : TimeSource::kUnknown;
   if (accuracy != nullptr && outages && runner.first_imu()) accuracy->use_outage_plan(*outages, runner.first_imu()->time_ns);
-  const SmoothedPassResult pass = write_smoothed(record, o, time_source, rate_hz, outputs, accuracy);
+  std::function<void(const filter::SmoothedSample&)> also;
+  if (collector != nullptr) also = [collector](const filter::SmoothedSample& sample) { collector->add(sample); };
+  const SmoothedPassResult pass = write_smoothed(record, o, time_source, rate_hz, outputs, accuracy, also);
   const filter::SmootherStats& s = pass.stats;
   result.summary.extra["smoother"] = {{"record_mb", static_cast<double>(record.bytes()) / 1e6},
                                       {"records_replaced", record.replaced()},
@@ -150,6 +163,19 @@ void smooth_record(filter::ForwardRecorder& record, const FusionRunner& runner, 
        << " records replaced by re-propagation); " << pass.poses << " smoothed poses in " << pass.wall_s << " s\n";
   result.smoother_text = text.str();
   result.poses = pass.poses;
+}
+
+// --calibration-out: the calibration over the collected log, its table into the result and
+// summary, the calibrated configuration to the file.
+void calibrate_log(const CalibrationCollector& collector, const config::Config& config, const std::string& path,
+                   ReplayResult& result) {
+  const calib::CalibrationResult r = calibration_solver()(collector.log());
+  result.summary.extra["calibration"] = calibration_json(r);
+  result.calibration_text = calibration_table(r);
+  if (r.epochs == 0 || r.iterations == 0) throw CommandError("calibration failed: " + r.message);
+  OutputFile out(path);
+  out.write(calibration_yaml(config, r));
+  out.commit();
 }
 
 }  // namespace
@@ -228,6 +254,13 @@ ReplayResult run_replay(const ReplayOptions& options) {
   if (outages) observer.score_outages(*outages, runner);
   std::unique_ptr<filter::ForwardRecorder> record;
   if (options.smooth) record = record_forward_pass(runner.engine());
+  std::unique_ptr<CalibrationCollector> collector;
+  if (!options.calibration_out.empty()) {
+    if (!options.smooth) throw CommandError("--calibration-out needs `navfuse smooth`");
+    if (!calibration_solver()) throw CommandError("--calibration-out: this build has no calibration solver");
+    collector = std::make_unique<CalibrationCollector>(filter_options);
+    observer.collect_for_calibration(collector.get());
+  }
   std::unique_ptr<InnovationCsvWriter> innovations;
   if (!options.innovations_csv.empty()) {
     innovations = std::make_unique<InnovationCsvWriter>(options.innovations_csv);
@@ -236,9 +269,13 @@ ReplayResult run_replay(const ReplayOptions& options) {
   ReplayResult result;
   result.summary = fuse_log(merger, runner, observer,
                             {.progress_bar = options.progress, .interrupt = options.interrupt});
-  if (record) smooth_record(*record, runner, filter_options, rate_hz, outages, outputs, accuracy.get(), result);
+  if (record) {
+    smooth_record(*record, runner, filter_options, rate_hz, outages, outputs, accuracy.get(), collector.get(), result);
+  }
   outputs.commit();
   if (innovations) innovations->commit();
+  // After the smoothed outputs are in place: a log that cannot be calibrated still has them.
+  if (collector) calibrate_log(*collector, config, options.calibration_out, result);
 
   result.imu_samples = runner.imu_samples();
   if (!options.smooth) result.poses = runner.poses();

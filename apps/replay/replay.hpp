@@ -37,6 +37,10 @@ struct ReplayOptions {
   // `navfuse smooth`: the fusion run is recorded and smoothed (RTS, filter/smoother/); the outputs
   // and the truth comparison get the smoothed solution, the forward one is scored beside it.
   bool smooth = false;
+  // smooth --calibration-out FILE: the batch calibration (calibration/, through the solver the
+  // executable registers, calibration_hook.hpp) over the log from the smoothed solution, written
+  // as a config with the calibrated keys (calibration_output.hpp).
+  std::string calibration_out;
   bool allow_truncated = false;
   bool progress = false;  // progress bar on stderr (only drawn when it is a terminal)
   // Polled while replaying (InterruptSignals::received()): non-zero stops early; the outputs are
@@ -52,6 +56,7 @@ struct ReplayResult {
   std::string accuracy_text;      // printable accuracy table (with --truth)
   std::string forward_accuracy_text;  // smooth: the forward filter's table beside it
   std::string smoother_text;          // smooth: what the smoother did, one paragraph
+  std::string calibration_text;       // smooth --calibration-out: the calibration table
   // Why the run produced nothing useful, one line (empty: it did): no IMU sample fused (an input
   // with no frame decoded, a log without IMU, every sample rejected), or the filter never left
   // initialization. `navfuse replay` exits 2 with it, after the summary.

@@ -41,7 +41,7 @@ int run(ReplayArgs& args) {
   }
   if (!args.quiet) {
     result.summary.print(std::cout, /*decode_only=*/false);
-    std::cout << result.smoother_text;
+    std::cout << result.smoother_text << result.calibration_text;
     std::cout << (args.options.smooth ? "smoothed poses: " : "poses: ") << result.poses << "\n";
     if (const auto it = result.summary.extra.find("lcm"); it != result.summary.extra.end()) {
       std::cout << "lcm: " << (*it)["published"] << " messages published, " << (*it)["failures"] << " failed\n";
@@ -104,6 +104,9 @@ void add_fusion_command(CLI::App& root, int& exit_code, const char* name, const 
   sub->add_flag("--allow-truncated", o.allow_truncated, "Replay an input whose last frame is cut off");
   add_quiet_flag(sub, args->quiet, "summary, accuracy or progress bar");
   if (smooth) {
+    sub->add_option("--calibration-out", o.calibration_out,
+                    "Calibrate lever arm, IMU mounting, IMU time offset, odometer scale and IMU biases over the "
+                    "log (Ceres batch fit from the smoothed solution); write the config with them to this file");
     add_examples(sub, {{"the demo drive smoothed, scored against truth (forward and smoothed), poses to CSV",
                         "navfuse smooth --config data/demo/vn300.yaml data/demo/vn300.vnb data/demo/vn300_wheel.p1log "
                         "--truth data/demo/truth.csv --csv smoothed.csv"},

@@ -24,7 +24,8 @@ std::unique_ptr<filter::ForwardRecorder> record_forward_pass(filter::Engine& eng
 
 SmoothedPassResult write_smoothed(filter::ForwardRecorder& record, const filter::FilterOptions& options,
                                   TimeSource time_source, double rate_hz, PoseOutputs& outputs,
-                                  TruthAccuracy* accuracy) {
+                                  TruthAccuracy* accuracy,
+                                  const std::function<void(const filter::SmoothedSample&)>& also) {
   SmoothedPassResult result;
   const auto start = std::chrono::steady_clock::now();
   std::optional<PoseOutputThread> writer;
@@ -37,6 +38,7 @@ SmoothedPassResult write_smoothed(filter::ForwardRecorder& record, const filter:
     if (epoch.pose_due) ++result.poses;
     if (writer) writer->post(epoch);
     if (accuracy != nullptr && epoch.pose_due) accuracy->add(epoch.solution);
+    if (also) also(s);
   });
   if (writer) writer->finish();
   result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 
 #include "apps/output/pose_outputs.hpp"
@@ -28,9 +29,11 @@ struct SmoothedPassResult {
 // cannot be made.
 std::unique_ptr<filter::ForwardRecorder> record_forward_pass(filter::Engine& engine);
 
-// Throws CommandError when the record cannot be read back or an output fails.
+// Throws CommandError when the record cannot be read back or an output fails. `also` (optional)
+// sees every smoothed IMU sample (the calibration's starting trajectory).
 SmoothedPassResult write_smoothed(filter::ForwardRecorder& record, const filter::FilterOptions& options,
                                   TimeSource time_source, double rate_hz, PoseOutputs& outputs,
-                                  TruthAccuracy* accuracy);
+                                  TruthAccuracy* accuracy,
+                                  const std::function<void(const filter::SmoothedSample&)>& also = {});
 
 }  // namespace navfuse::apps

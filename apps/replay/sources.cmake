@@ -1,5 +1,8 @@
 # apps/replay: `navfuse replay` (input merge, filter run, pose outputs, accuracy against truth).
 target_sources(navfuse_apps PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/calibration_collector.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/calibration_hook.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/calibration_output.cpp
   ${CMAKE_CURRENT_LIST_DIR}/error_stats.cpp
   ${CMAKE_CURRENT_LIST_DIR}/replay.cpp
   ${CMAKE_CURRENT_LIST_DIR}/replay_command.cpp

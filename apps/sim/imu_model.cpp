@@ -50,6 +50,10 @@ ImuModel::ImuModel(const ImuSpec& spec, std::uint64_t seed)
     throw std::invalid_argument("imu.substeps must be even and at least 2 (Simpson's rule)");
   }
   c_vs_ = rot::dcm_from_rpy(spec_.mounting_rpy_deg * rot::kDegToRad);
+  if (!std::isfinite(spec_.time_offset_s) || std::abs(spec_.time_offset_s) > 1.0) {
+    throw std::invalid_argument("imu.time_offset_s must be within +-1 s");
+  }
+  time_offset_ns_ = time::nanoseconds(spec_.time_offset_s);
 }
 
 void ImuModel::make_sample(const TruthSample* nodes, ImuSample& out) {
@@ -95,7 +99,7 @@ void ImuModel::make_sample(const TruthSample* nodes, ImuSample& out) {
     accel = c_vs_ * accel;
   }
 
-  out.header.time_ns = end.time_ns;
+  out.header.time_ns = stamp_ns(end.time_ns);
   out.header.time_source = TimeSource::kGps;
   out.header.valid = ImuSample::kValidGyro | ImuSample::kValidAccel;
   out.quantity = spec_.quantity;

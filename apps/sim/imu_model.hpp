@@ -38,6 +38,9 @@ struct ImuSpec {
   ImuErrorSpec errors{};
   int substeps = 4;  // truth nodes per IMU interval for the delta-v quadrature (even, >= 2)
   VibrationSpec vibration{};  // engine and road vibration (off by default)
+  // The IMU clock's offset from GPS time: samples are stamped this much before the true time of
+  // their motion, so config imu.time_offset_s = time_offset_s puts them back (calibration tests).
+  double time_offset_s = 0.0;
 };
 
 class ImuModel {
@@ -57,10 +60,13 @@ class ImuModel {
   Eigen::Vector3d gyro_bias_vehicle_rps() const { return c_vs_ * errors_.gyro_bias_rps(); }
   Eigen::Vector3d accel_bias_vehicle_mps2() const { return c_vs_ * errors_.accel_bias_mps2(); }
   const ImuErrorModel& errors() const { return errors_; }
+  // The stamp of the sample whose motion ends at true time `true_time_ns` (ImuSpec::time_offset_s).
+  std::int64_t stamp_ns(std::int64_t true_time_ns) const { return true_time_ns - time_offset_ns_; }
 
  private:
   ImuSpec spec_;
   std::int64_t period_ns_ = 0;
+  std::int64_t time_offset_ns_ = 0;
   Eigen::Matrix3d c_vs_ = Eigen::Matrix3d::Identity();
   ImuErrorModel errors_;
   VibrationModel vibration_;

@@ -42,6 +42,42 @@ Scenario base_scenario(std::string name, TrajectorySpec trajectory) {
   return s;
 }
 
+// ~3.7 minutes with what makes an installation observable: turns both ways (lever arm x/y and
+// mounting yaw against heading), speed changes (time offset against lever arm x), and climbs and
+// road camber (the vertical lever arm is seen only as the vehicle tilts: +-8 deg pitch, +-6 deg
+// roll).
+TrajectorySpec calibration_trajectory() {
+  TrajectorySpec t = drive_start();
+  Seg camber{.kind = MotionKind::kCombined, .duration_s = 6.0, .speed_mps = {}, .heading_change_rad = {},
+             .pitch_rad = {}, .roll_rad = 6.0 * kDeg};
+  Seg camber_left = camber;
+  camber_left.roll_rad = -6.0 * kDeg;
+  Seg level = camber;
+  level.roll_rad = 0.0;
+  t.segments = {
+      Seg::stationary(30.0),                                    //   0 -  30 static start
+      Seg::accelerate(15.0, 10.0), Seg::cruise(10.0),           //  30 -  50
+      Seg::turn(90.0 * kDeg, 10.0),                             //  50 -  60
+      Seg::climb(8.0 * kDeg, 6.0), Seg::cruise(10.0),           //  60 -  76 uphill
+      Seg::climb(0.0, 6.0), Seg::turn(-90.0 * kDeg, 10.0),      //  76 -  92
+      camber, Seg::cruise(8.0), camber_left, Seg::cruise(8.0), level,  //  92 - 126 road camber
+      Seg::accelerate(20.0, 8.0), Seg::turn(45.0 * kDeg, 12.0),  // 126 - 146
+      Seg::climb(-8.0 * kDeg, 6.0), Seg::cruise(8.0),           // 146 - 160 downhill
+      Seg::climb(0.0, 6.0), Seg::turn(-45.0 * kDeg, 12.0),      // 160 - 178
+      Seg::accelerate(6.0, 10.0), Seg::turn(180.0 * kDeg, 15.0),  // 178 - 203 U-turn
+      Seg::accelerate(0.0, 8.0), Seg::stationary(10.0),         // 203 - 221 stop
+  };
+  return t;
+}
+
+// The installation errors a calibration has to find (calibration_drive): an IMU mounted turned
+// from the vehicle axes and an IMU clock 50 ms behind GPS time. Its own function so other sensor
+// changes to a scenario stay separate from it.
+void add_installation_errors(Scenario& s) {
+  s.imu.mounting_rpy_deg = {0.3, 1.5, -2.0};
+  s.imu.time_offset_s = 0.05;
+}
+
 }  // namespace
 
 TrajectorySpec reference_drive() {
@@ -116,7 +152,7 @@ TrajectorySpec eight_hour_drive() {
 
 std::vector<std::string_view> scenario_names() {
   std::vector<std::string_view> names = {"static_start", "drive_outage", "rtk_drive",  "drive_short", "delayed_gnss",
-                                         "outliers",     "dual_antenna", "drive_9min", "drive_8h"};
+                                         "outliers",     "dual_antenna", "drive_9min", "drive_8h", "calibration_drive"};
   for (std::string_view n : reality_scenario_names()) names.push_back(n);
   return names;
 }
@@ -164,6 +200,14 @@ std::optional<Scenario> find_scenario(std::string_view name) {
     return s;
   }
   if (name == "drive_9min") return base_scenario("drive_9min", nine_minute_drive());
+  if (name == "calibration_drive") {
+    Scenario s = base_scenario("calibration_drive", calibration_trajectory());
+    const Eigen::Vector3d lever = s.gnss.lever_arm_m;
+    s.gnss = gnss_rtk_fixed(10.0);
+    s.gnss.lever_arm_m = lever;
+    add_installation_errors(s);
+    return s;
+  }
   if (name == "drive_8h") return base_scenario("drive_8h", eight_hour_drive());
   return find_reality_scenario(name);
 }

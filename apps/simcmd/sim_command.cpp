@@ -60,6 +60,16 @@ class TruthSink {
   std::uint64_t rows_ = 0;
 };
 
+// --imu-time-offset, --imu-mounting over the scenario's IMU.
+void apply_imu_installation(const SimOptions& options, sim::Scenario& scenario) {
+  if (options.imu_time_offset_s) scenario.imu.time_offset_s = *options.imu_time_offset_s;
+  if (options.imu_mounting_rpy_deg) {
+    const std::vector<double>& rpy = *options.imu_mounting_rpy_deg;
+    if (rpy.size() != 3) throw CommandError("--imu-mounting takes roll,pitch,yaw (3 values in degrees)");
+    scenario.imu.mounting_rpy_deg = {rpy[0], rpy[1], rpy[2]};
+  }
+}
+
 }  // namespace
 
 SimReport run_sim(const SimOptions& options) {
@@ -70,6 +80,7 @@ SimReport run_sim(const SimOptions& options) {
     throw CommandError(e.what());
   }
   if (options.seed) scenario.seed = *options.seed;
+  apply_imu_installation(options, scenario);
   if (options.wheel_tick_m > 0.0) {
     scenario.wheel.vehicle_ticks = scenario.wheel.vehicle_speed;
     scenario.wheel.vehicle_speed = false;
@@ -181,6 +192,8 @@ void add_sim_command(CLI::App& root, int& exit_code) {
     SimOptions options;
     std::uint64_t seed = 0;
     double device_rate_hz = -1.0;
+    double imu_time_offset_s = 0.0;
+    std::vector<double> imu_mounting_rpy_deg;
     bool quiet = false;
   };
   auto args = std::make_shared<Args>();
@@ -201,16 +214,25 @@ void add_sim_command(CLI::App& root, int& exit_code) {
       ->check(CLI::Range(1e-6, 10.0));
   sub->add_option("--device-rate", args->device_rate_hz, "Device INS solution rate in Hz (0: none)")
       ->check(CLI::NonNegativeNumber);
+  CLI::Option* time_offset = sub->add_option("--imu-time-offset", args->imu_time_offset_s,
+                  "IMU clock offset in s: samples stamped this much before their true time (default: the scenario's)")
+      ->check(CLI::Range(-1.0, 1.0));
+  CLI::Option* mounting = sub->add_option("--imu-mounting", args->imu_mounting_rpy_deg,
+                  "IMU mounting sensor -> vehicle roll,pitch,yaw in deg (default: the scenario's)")
+      ->delimiter(',')
+      ->expected(3);
   add_quiet_flag(sub, args->quiet, "report of what was written");
   add_examples(sub, {{"a short drive as a CV7 (MIP) log, with its truth",
                       "navfuse sim --scenario drive_short --format mip --out drive.mip --truth truth.csv"},
                      {"a drive with GNSS outages as VN-300 binary, the wheel speeds in a FusionEngine log",
                       "navfuse sim --scenario drive_outage --format vn --out drive.vnb --wheel-out wheel.p1log"}});
-  sub->callback([args, seed, &exit_code] {
+  sub->callback([args, seed, time_offset, mounting, &exit_code] {
     if (seed->count() > 0) args->options.seed = args->seed;
     if (args->device_rate_hz >= 0.0) args->options.device_rate_hz = args->device_rate_hz;
     const InterruptSignals signals;
     args->options.interrupt = &InterruptSignals::received();
+    if (time_offset->count() > 0) args->options.imu_time_offset_s = args->imu_time_offset_s;
+    if (mounting->count() > 0) args->options.imu_mounting_rpy_deg = args->imu_mounting_rpy_deg;
     const SimReport report = run_sim(args->options);
     if (!args->quiet || report.interrupted_by != 0) print_report(args->options, report, std::cout);
     exit_code = report.interrupted_by != 0 ? interrupted_exit_code(report.interrupted_by) : 0;

@@ -12,6 +12,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -31,6 +32,10 @@ struct SimOptions {
   // Polled per measurement (InterruptSignals::received()): non-zero stops the simulation; the
   // logs are committed with the frames written so far and SimReport::interrupted_by says so.
   const std::atomic<int>* interrupt = nullptr;
+  // The IMU installation, overriding the scenario's: clock offset (stamps this much before the
+  // true time) and mounting sensor -> vehicle roll, pitch, yaw in degrees.
+  std::optional<double> imu_time_offset_s;
+  std::optional<std::vector<double>> imu_mounting_rpy_deg;
 };
 
 struct SimReport {

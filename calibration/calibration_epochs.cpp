@@ -1,0 +1,125 @@
+#include "calibration/calibration_epochs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "core/rotation/rotation.hpp"
+
+namespace navfuse::calib {
+namespace {
+
+constexpr double kNsPerS = 1e9;
+
+// The smoothed point at `time_ns`, if one lies within `tolerance_ns` (the smoother reports every
+// IMU sample it smoothed).
+const TrajectoryPoint* trajectory_at(const std::vector<TrajectoryPoint>& traj, std::int64_t time_ns,
+                                     std::int64_t tolerance_ns) {
+  const auto it = std::lower_bound(traj.begin(), traj.end(), time_ns,
+                                   [](const TrajectoryPoint& p, std::int64_t t) { return p.time_ns < t; });
+  const TrajectoryPoint* best = nullptr;
+  if (it != traj.end()) best = &*it;
+  if (it != traj.begin() && (best == nullptr || time_ns - (it - 1)->time_ns < best->time_ns - time_ns)) best = &*(it - 1);
+  if (best == nullptr || std::llabs(best->time_ns - time_ns) > tolerance_ns) return nullptr;
+  return best;
+}
+
+}  // namespace
+
+ImuRates imu_rates(const std::vector<ImuSample>& imu, std::size_t i) {
+  const ImuSample& s = imu[i];
+  double dt = i > 0 ? static_cast<double>(s.header.time_ns - imu[i - 1].header.time_ns) / kNsPerS : s.dt_s;
+  if (!(dt > 0.0)) dt = s.dt_s;
+  if (!(dt > 0.0)) return {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.0};  // no interval: nothing to add
+  if (s.quantity == ImuQuantity::kIncrements) {
+    const double d = s.dt_s > 0.0 ? s.dt_s : dt;
+    return {s.gyro / d, s.accel / d, dt};
+  }
+  return {s.gyro, s.accel, dt};
+}
+
+std::size_t nearest_imu(const std::vector<ImuSample>& imu, std::int64_t time_ns) {
+  const auto it = std::lower_bound(imu.begin(), imu.end(), time_ns,
+                                   [](const ImuSample& s, std::int64_t t) { return s.header.time_ns < t; });
+  if (it == imu.end()) return imu.size() - 1;
+  const auto i = static_cast<std::size_t>(it - imu.begin());
+  if (i > 0 && time_ns - imu[i - 1].header.time_ns < it->header.time_ns - time_ns) return i - 1;
+  return i;
+}
+
+EpochPlan plan_epochs(const CalibrationLog& log, const CalibrationSetup& setup, const LocalFrame& frame,
+                      double max_spacing_s, double max_imu_gap_s) {
+  EpochPlan plan;
+  if (log.imu.size() < 2 || log.trajectory.empty()) return plan;
+  const auto offset_ns = static_cast<std::int64_t>(std::llround(setup.imu_time_offset_s * kNsPerS));
+  const std::int64_t shift_ns =
+      offset_ns - static_cast<std::int64_t>(std::llround(log.setup.imu_time_offset_s * kNsPerS));
+  const auto traj_at = [&](std::int64_t imu_time_ns, std::int64_t tolerance_ns) {
+    return trajectory_at(log.trajectory, imu_time_ns + shift_ns, tolerance_ns);
+  };
+  const auto tolerance_ns = static_cast<std::int64_t>(0.02 * kNsPerS);
+
+  // The samples at the fixes, then fill-ins between fixes further apart than the spacing.
+  std::set<std::size_t> chosen;
+  for (const GnssPosition& fix : log.positions) {
+    const std::size_t i = nearest_imu(log.imu, fix.header.time_ns - offset_ns);
+    if (traj_at(log.imu[i].header.time_ns, tolerance_ns) != nullptr) chosen.insert(i);
+  }
+  const auto spacing_ns = static_cast<std::int64_t>(max_spacing_s * kNsPerS);
+  const auto gap_ns = static_cast<std::int64_t>(max_imu_gap_s * kNsPerS);
+  std::vector<std::size_t> base(chosen.begin(), chosen.end());
+  for (std::size_t k = 1; k < base.size(); ++k) {
+    std::int64_t last = log.imu[base[k - 1]].header.time_ns;
+    for (std::size_t i = base[k - 1] + 1; i < base[k]; ++i) {
+      const std::int64_t t = log.imu[i].header.time_ns;
+      if (t - log.imu[i - 1].header.time_ns > gap_ns) last = t;  // a new chain starts here
+      if (t - last >= spacing_ns && log.imu[base[k]].header.time_ns - t >= spacing_ns / 2 &&
+          traj_at(t, tolerance_ns) != nullptr) {
+        chosen.insert(i);
+        last = t;
+      }
+    }
+  }
+
+  const Eigen::Matrix3d c_vs = rot::dcm_from_rpy(setup.mounting_rpy_rad);
+  // Biases: the smoothed ones, averaged over the log (the calibration holds them constant).
+  Eigen::Vector3d bg_v = Eigen::Vector3d::Zero(), ba_v = Eigen::Vector3d::Zero();
+  for (const TrajectoryPoint& p : log.trajectory) {
+    bg_v += p.gyro_bias_v_rps;
+    ba_v += p.accel_bias_v_mps2;
+  }
+  plan.bg0 = c_vs.transpose() * bg_v / static_cast<double>(log.trajectory.size());
+  plan.ba0 = c_vs.transpose() * ba_v / static_cast<double>(log.trajectory.size());
+
+  std::size_t previous = 0;
+  for (const std::size_t i : chosen) {
+    const TrajectoryPoint* tp = traj_at(log.imu[i].header.time_ns, tolerance_ns);
+    Epoch e;
+    e.imu_index = i;
+    e.time_ns = log.imu[i].header.time_ns;
+    e.llh = {tp->lat_rad, tp->lon_rad, tp->height_m};
+    const Eigen::Matrix3d c_tn = frame.rot_from_ned(e.llh);
+    const Eigen::Vector3d p = frame.position(e.llh);
+    const Eigen::Vector3d v = c_tn * tp->vel_ned_mps;
+    const Eigen::Matrix3d c_ts = c_tn * tp->q_nv.toRotationMatrix() * c_vs;
+    const Eigen::Quaterniond q(c_ts);
+    e.p = {p.x(), p.y(), p.z()};
+    e.v = {v.x(), v.y(), v.z()};
+    e.q = {q.x(), q.y(), q.z(), q.w()};
+    const ImuRates r = imu_rates(log.imu, i);
+    e.knowns.mount_roll_rad = setup.mounting_rpy_rad.x();
+    e.knowns.rate_s_rps = r.gyro_rps - plan.bg0 - c_ts.transpose() * frame.earth_rate();
+    e.knowns.accel_t_mps2 = c_ts * (r.accel_mps2 - plan.ba0) + frame.gravity(e.llh) - 2.0 * frame.earth_rate().cross(v);
+    if (!plan.epochs.empty()) {
+      e.chained = true;
+      for (std::size_t j = previous + 1; j <= i; ++j) {
+        if (log.imu[j].header.time_ns - log.imu[j - 1].header.time_ns > gap_ns) e.chained = false;
+      }
+    }
+    previous = i;
+    plan.epochs.push_back(e);
+  }
+  return plan;
+}
+
+}  // namespace navfuse::calib

@@ -1,0 +1,310 @@
+#include "calibration/calibration_problem.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include <ceres/ceres.h>
+
+#include "calibration/calibration_epochs.hpp"
+#include "calibration/gnss_factors.hpp"
+#include "calibration/imu_preintegration.hpp"
+#include "calibration/local_frame.hpp"
+#include "calibration/odometry_factors.hpp"
+#include "calibration/preintegration_factor.hpp"
+
+namespace navfuse::calib {
+namespace {
+
+constexpr double kNsPerS = 1e9;
+
+// The calibration's own parameter blocks.
+struct Globals {
+  double lever[3] = {0, 0, 0};
+  double mount[2] = {0, 0};  // pitch, yaw
+  double dt[1] = {0};
+  double scale[1] = {1};
+  double bg[3] = {0, 0, 0};
+  double ba[3] = {0, 0, 0};
+  double sg[3] = {0, 0, 0};
+  double sa[3] = {0, 0, 0};
+};
+
+bool usable_fix(const GnssPosition& p) {
+  return (p.header.valid & GnssPosition::kValidPosition) != 0 && p.receiver_id == 0 && p.fix != GnssFixType::kNone &&
+         p.fix != GnssFixType::kDeadReckoning;
+}
+
+// The speed at GNSS time `t_ns` interpolated between its neighbours, when both lie within
+// `max_gap_ns`.
+bool speed_at(const std::vector<SpeedSample>& speeds, std::int64_t t_ns, std::int64_t max_gap_ns, double& speed,
+              double& std) {
+  const auto it = std::lower_bound(speeds.begin(), speeds.end(), t_ns,
+                                   [](const SpeedSample& s, std::int64_t t) { return s.time_ns < t; });
+  if (it == speeds.begin() || it == speeds.end()) return false;
+  const SpeedSample& a = *(it - 1);
+  const SpeedSample& b = *it;
+  if (b.time_ns - a.time_ns > max_gap_ns || b.time_ns == a.time_ns) return false;
+  const double span = static_cast<double>(b.time_ns - a.time_ns) / kNsPerS;
+  speed = a.speed_mps + (b.speed_mps - a.speed_mps) * static_cast<double>(t_ns - a.time_ns) / kNsPerS / span;
+  std = std::max(a.std_mps, b.std_mps);
+  return true;
+}
+
+// sqrt of each block's covariance diagonal; false when Ceres cannot compute it (rank deficient).
+bool block_stds(ceres::Covariance& cov, const double* block, int size, double* out) {
+  std::vector<double> c(static_cast<std::size_t>(size * size));
+  if (!cov.GetCovarianceBlock(block, block, c.data())) return false;
+  for (int i = 0; i < size; ++i) out[i] = std::sqrt(std::max(0.0, c[static_cast<std::size_t>(i * size + i)]));
+  return true;
+}
+
+// One solve, linearised about `setup` (see calibrate()).
+CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& setup, const CalibrationOptions& options) {
+  CalibrationResult result;
+  result.gnss_lever_arm_m.value = setup.gnss_lever_arm_m;
+  result.mounting_rpy_rad.value = setup.mounting_rpy_rad;
+  result.imu_time_offset_s.value = setup.imu_time_offset_s;
+  if (log.trajectory.empty() || log.imu.size() < 2) {
+    result.message = "no smoothed trajectory or IMU samples to start from";
+    return result;
+  }
+  const TrajectoryPoint& first = log.trajectory.front();
+  const LocalFrame frame({first.lat_rad, first.lon_rad, first.height_m});
+  EpochPlan plan = plan_epochs(log, setup, frame, options.max_epoch_spacing_s, options.max_imu_gap_s);
+  std::vector<Epoch>& epochs = plan.epochs;
+  if (epochs.size() < 3) {
+    result.message = "fewer than 3 epochs where GNSS fixes meet the smoothed trajectory";
+    return result;
+  }
+  result.epochs = epochs.size();
+
+  Globals g;
+  for (int i = 0; i < 3; ++i) {
+    g.lever[i] = setup.gnss_lever_arm_m[i];
+    g.bg[i] = plan.bg0[i];
+    g.ba[i] = plan.ba0[i];
+  }
+  g.mount[0] = setup.mounting_rpy_rad.y();
+  g.mount[1] = setup.mounting_rpy_rad.z();
+  g.dt[0] = setup.imu_time_offset_s;
+
+  ceres::Problem problem;
+  auto* quaternion = new ceres::EigenQuaternionManifold;  // owned by the problem
+  for (Epoch& e : epochs) {
+    problem.AddParameterBlock(e.p.data(), 3);
+    problem.AddParameterBlock(e.v.data(), 3);
+    problem.AddParameterBlock(e.q.data(), 4, quaternion);
+  }
+
+  // IMU factors.
+  const ImuNoiseDensity noise{.gyro_rad_rts = setup.gyro_arw_rad_rts, .accel_mps_rts = setup.accel_vrw_mps_rts};
+  for (std::size_t k = 1; k < epochs.size(); ++k) {
+    Epoch& a = epochs[k - 1];
+    Epoch& b = epochs[k];
+    if (!b.chained) continue;
+    const Eigen::Matrix3d c_ts = Eigen::Quaterniond(a.q[3], a.q[0], a.q[1], a.q[2]).toRotationMatrix();
+    ImuPreintegration pre(plan.bg0, plan.ba0, c_ts, frame.earth_rate(), noise);
+    for (std::size_t i = a.imu_index + 1; i <= b.imu_index; ++i) {
+      const ImuRates r = imu_rates(log.imu, i);
+      pre.add(r.gyro_rps * r.dt_s, r.accel_mps2 * r.dt_s, r.dt_s);
+    }
+    pre.add_bias_drift(setup.gyro_bias_std_rps, setup.accel_bias_std_mps2);
+    const Eigen::Vector3d gravity = 0.5 * (frame.gravity(a.llh) + frame.gravity(b.llh));
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<PreintegrationFactor, 9, 3, 3, 4, 3, 3, 4, 3, 3, 3, 3>(
+            new PreintegrationFactor(pre, gravity, frame.earth_rate())),
+        nullptr, a.p.data(), a.v.data(), a.q.data(), b.p.data(), b.v.data(), b.q.data(), g.bg, g.ba, g.sg, g.sa);
+    ++result.imu_factors;
+  }
+  if (result.imu_factors == 0) {
+    result.message = "no two epochs are linked by IMU samples";
+    return result;
+  }
+
+  // GNSS factors at the epoch nearest each fix (through the configured offset).
+  const auto offset_ns = static_cast<std::int64_t>(std::llround(setup.imu_time_offset_s * kNsPerS));
+  const auto imu_period_ns = (log.imu.back().header.time_ns - log.imu.front().header.time_ns) /
+                             static_cast<std::int64_t>(log.imu.size() - 1);
+  auto epoch_near = [&](std::int64_t gnss_time_ns) -> Epoch* {
+    const std::int64_t t = gnss_time_ns - offset_ns;
+    const auto it = std::lower_bound(epochs.begin(), epochs.end(), t,
+                                     [](const Epoch& e, std::int64_t tt) { return e.time_ns < tt; });
+    Epoch* best = it != epochs.end() ? &*it : nullptr;
+    if (it != epochs.begin() && (best == nullptr || t - (it - 1)->time_ns < best->time_ns - t)) best = &*(it - 1);
+    if (best == nullptr || std::llabs(best->time_ns - t) > imu_period_ns) return nullptr;
+    return best;
+  };
+  struct FixUse {
+    const Epoch* epoch;
+    Eigen::Vector3d pos_t;
+    double tau_s;
+  };
+  std::vector<FixUse> used_fixes;
+  for (const GnssPosition& fix : log.positions) {
+    if (!usable_fix(fix)) continue;
+    Epoch* e = epoch_near(fix.header.time_ns);
+    if (e == nullptr) continue;
+    const geo::Llh llh{fix.lat_rad, fix.lon_rad, fix.height_m};
+    const Eigen::Matrix3d c_tn = frame.rot_from_ned(llh);
+    const Eigen::Vector3d pos_t = frame.position(llh);
+    const double tau = static_cast<double>(fix.header.time_ns - e->time_ns) / kNsPerS;
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<GnssPositionFactor, 3, 3, 3, 4, 3, 2, 1>(
+                                 new GnssPositionFactor(pos_t, c_tn * fix.cov_ned_m2 * c_tn.transpose(), tau, e->knowns)),
+                             new ceres::HuberLoss(options.huber_sigmas), e->p.data(), e->v.data(), e->q.data(), g.lever,
+                             g.mount, g.dt);
+    used_fixes.push_back({e, pos_t, tau});
+  }
+  result.gnss_position_residuals = used_fixes.size();
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<VectorPrior, 3, 3>(
+                               new VectorPrior(log.setup.gnss_lever_arm_m, options.lever_arm_prior_std_m)),
+                           nullptr, g.lever);
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<VectorPrior, 3, 3>(
+                               new VectorPrior(Eigen::Vector3d::Zero(), setup.gyro_scale_std)),
+                           nullptr, g.sg);
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<VectorPrior, 3, 3>(
+                               new VectorPrior(Eigen::Vector3d::Zero(), setup.accel_scale_std)),
+                           nullptr, g.sa);
+  for (const GnssVelocity& vel : log.velocities) {
+    if ((vel.header.valid & GnssVelocity::kValidVelocity) == 0 || vel.receiver_id != 0) continue;
+    Epoch* e = epoch_near(vel.header.time_ns);
+    if (e == nullptr) continue;
+    const Eigen::Matrix3d c_tn = frame.rot_from_ned({e->llh});
+    const double s2 = setup.gnss_velocity_std_scale * setup.gnss_velocity_std_scale;
+    const double tau = static_cast<double>(vel.header.time_ns - e->time_ns) / kNsPerS;
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<GnssVelocityFactor, 3, 3, 4, 3, 2, 1>(new GnssVelocityFactor(
+            c_tn * vel.vel_ned_mps, s2 * c_tn * vel.cov_ned_m2ps2 * c_tn.transpose(), tau, e->knowns)),
+        new ceres::HuberLoss(options.huber_sigmas), e->v.data(), e->q.data(), g.lever, g.mount, g.dt);
+    ++result.gnss_velocity_residuals;
+  }
+
+  // Odometry and NHC at every epoch.
+  const Eigen::Matrix3d c_vs0 = dcm_from_rpy(setup.mounting_rpy_rad.x(), setup.mounting_rpy_rad.y(), setup.mounting_rpy_rad.z());
+  const auto speed_gap_ns = static_cast<std::int64_t>(0.2 * kNsPerS);
+  for (Epoch& e : epochs) {
+    double speed = 0.0, std = 0.0;
+    const double roll = e.knowns.mount_roll_rad;
+    if (speed_at(log.speeds, e.time_ns + offset_ns, speed_gap_ns, speed, std)) {
+      // The speed's rate of change from the IMU's acceleration, not from the speeds themselves:
+      // a slope from the same noisy samples as the speed correlates with its noise and biases
+      // the time offset (errors in variables). For motion along x, d(v_x)/dt = a_x.
+      const Eigen::Matrix3d c_ts = Eigen::Quaterniond(e.q[3], e.q[0], e.q[1], e.q[2]).toRotationMatrix();
+      const double slope = (c_vs0 * c_ts.transpose() * e.knowns.accel_t_mps2).x();
+      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<WheelSpeedFactor, 1, 3, 4, 2, 1, 1>(new WheelSpeedFactor(
+                                   speed, slope, setup.imu_time_offset_s, std, roll, e.knowns.rate_s_rps,
+                                   setup.wheel_lever_arm_m)),
+                               new ceres::HuberLoss(options.huber_sigmas), e.v.data(), e.q.data(), g.mount, g.scale,
+                               g.dt);
+      ++result.speed_residuals;
+    }
+    const Eigen::Vector3d v(e.v[0], e.v[1], e.v[2]);
+    if (setup.land_vehicle && v.norm() > setup.nhc_min_speed_mps) {
+      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<NhcFactor, 2, 3, 4, 2>(new NhcFactor(
+                                   setup.nhc_lateral_std_mps, setup.nhc_vertical_std_mps, roll, e.knowns.rate_s_rps,
+                                   setup.nhc_lever_arm_m)),
+                               new ceres::HuberLoss(options.huber_sigmas), e.v.data(), e.q.data(), g.mount);
+      ++result.nhc_residuals;
+    }
+  }
+  result.mounting_estimated = result.speed_residuals + result.nhc_residuals > 0;
+  result.mounting_is_residual = setup.imu_in_vehicle_frame;
+  if (!result.mounting_estimated) problem.SetParameterBlockConstant(g.mount);
+
+  ceres::Solver::Options solver;
+  solver.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+  solver.max_num_iterations = options.max_iterations;
+  solver.num_threads = options.threads;
+  solver.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver, &problem, &summary);
+  result.iterations = static_cast<int>(summary.iterations.size());
+  result.initial_cost = summary.initial_cost;
+  result.final_cost = summary.final_cost;
+  result.converged = summary.termination_type == ceres::CONVERGENCE;
+  result.message = summary.BriefReport();
+  if (!summary.IsSolutionUsable()) return result;
+
+  double sum_sq = 0.0;
+  for (const FixUse& f : used_fixes) {
+    const GnssPositionFactor unweighted(f.pos_t, Eigen::Matrix3d::Identity(), f.tau_s, f.epoch->knowns);
+    double r[3];
+    unweighted(f.epoch->p.data(), f.epoch->v.data(), f.epoch->q.data(), g.lever, g.mount, g.dt, r);
+    sum_sq += r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+  }
+  result.position_rms_m = used_fixes.empty() ? 0.0 : std::sqrt(sum_sq / static_cast<double>(used_fixes.size()));
+
+  result.gnss_lever_arm_m.value = Eigen::Vector3d(g.lever[0], g.lever[1], g.lever[2]);
+  result.mounting_rpy_rad.value = Eigen::Vector3d(setup.mounting_rpy_rad.x(), g.mount[0], g.mount[1]);
+  result.imu_time_offset_s.value = g.dt[0];
+  result.gyro_bias_rps.value = Eigen::Vector3d(g.bg[0], g.bg[1], g.bg[2]);
+  result.accel_bias_mps2.value = Eigen::Vector3d(g.ba[0], g.ba[1], g.ba[2]);
+  result.gyro_scale.value = Eigen::Vector3d(g.sg[0], g.sg[1], g.sg[2]);
+  result.accel_scale.value = Eigen::Vector3d(g.sa[0], g.sa[1], g.sa[2]);
+  if (result.speed_residuals > 0) result.odometer_scale = Estimate1{.value = g.scale[0], .std = 0.0};
+
+  // Uncertainties: ceres::Covariance on the calibration blocks, scaled by the variance factor of
+  // the fit when it exceeds one (residuals larger than their stated noise).
+  std::vector<const double*> blocks = {g.lever, g.dt, g.bg, g.ba, g.sg, g.sa};
+  if (result.mounting_estimated) blocks.push_back(g.mount);
+  if (result.speed_residuals > 0) blocks.push_back(g.scale);
+  std::vector<std::pair<const double*, const double*>> pairs;
+  for (const double* b : blocks) pairs.emplace_back(b, b);
+  ceres::Covariance::Options cov_options;
+  cov_options.algorithm_type = ceres::SPARSE_QR;
+  cov_options.num_threads = options.threads;
+  ceres::Covariance covariance(cov_options);
+  const auto redundancy = static_cast<double>(summary.num_residuals_reduced - summary.num_effective_parameters_reduced);
+  const double variance_factor = redundancy > 0 ? std::max(1.0, 2.0 * summary.final_cost / redundancy) : 1.0;
+  const double k = std::sqrt(variance_factor);
+  if (covariance.Compute(pairs, &problem)) {
+    double s[3];
+    result.covariance_ok = block_stds(covariance, g.lever, 3, s);
+    result.gnss_lever_arm_m.std = k * Eigen::Vector3d(s[0], s[1], s[2]);
+    result.covariance_ok = result.covariance_ok && block_stds(covariance, g.dt, 1, s);
+    result.imu_time_offset_s.std = k * s[0];
+    result.covariance_ok = result.covariance_ok && block_stds(covariance, g.bg, 3, s);
+    result.gyro_bias_rps.std = k * Eigen::Vector3d(s[0], s[1], s[2]);
+    result.covariance_ok = result.covariance_ok && block_stds(covariance, g.ba, 3, s);
+    result.accel_bias_mps2.std = k * Eigen::Vector3d(s[0], s[1], s[2]);
+    result.covariance_ok = result.covariance_ok && block_stds(covariance, g.sg, 3, s);
+    result.gyro_scale.std = k * Eigen::Vector3d(s[0], s[1], s[2]);
+    result.covariance_ok = result.covariance_ok && block_stds(covariance, g.sa, 3, s);
+    result.accel_scale.std = k * Eigen::Vector3d(s[0], s[1], s[2]);
+    if (result.mounting_estimated && block_stds(covariance, g.mount, 2, s)) {
+      result.mounting_rpy_rad.std = k * Eigen::Vector3d(0.0, s[0], s[1]);
+    }
+    if (result.odometer_scale && block_stds(covariance, g.scale, 1, s)) result.odometer_scale->std = k * s[0];
+  } else {
+    result.message += "; covariance not computable (a calibration parameter is unobservable in this log)";
+  }
+  return result;
+}
+
+}  // namespace
+
+CalibrationResult calibrate(const CalibrationLog& log, const CalibrationOptions& options) {
+  // Outer passes: the knowns of the factors (which fix meets which state, the first-order time
+  // shifts, the speed's slope, the trajectory read on the IMU clock) are taken at the offset and
+  // installation of the previous pass, until the offset stops moving.
+  const auto start = std::chrono::steady_clock::now();
+  CalibrationSetup setup = log.setup;
+  CalibrationResult result;
+  for (int pass = 0; pass < options.max_passes; ++pass) {
+    result = solve_once(log, setup, options);
+    if (result.iterations == 0 || !result.converged) break;
+    const double moved_s = std::abs(result.imu_time_offset_s.value - setup.imu_time_offset_s);
+    setup.imu_time_offset_s = result.imu_time_offset_s.value;
+    setup.gnss_lever_arm_m = result.gnss_lever_arm_m.value;
+    setup.mounting_rpy_rad = result.mounting_rpy_rad.value;
+    if (moved_s < options.offset_tolerance_s) break;
+  }
+  result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace navfuse::calib

@@ -1,0 +1,40 @@
+// The batch calibration over a whole log (Ceres): states at the GNSS epochs tied by IMU
+// preintegration (preintegration_factor.hpp), GNSS position and velocity through the lever arm and
+// the IMU clock offset (gnss_factors.hpp), wheel speed with an odometer scale and the
+// non-holonomic constraint through the mounting (odometry_factors.hpp), robust (Huber) losses on
+// every aiding residual so outliers do not drag the fit. The states start from the smoothed
+// solution (filter/smoother); the installation from the configuration.
+//
+// Epochs: the IMU sample nearest each GNSS fix (on the IMU clock, through the configured offset);
+// where fixes are further apart than max_epoch_spacing_s (outages, 1 Hz receivers) samples are
+// added so odometry and NHC are seen throughout. An IMU gap longer than max_imu_gap_s breaks the
+// chain: the pieces share only the calibration parameters.
+//
+// Estimated: lever arm, mounting pitch and yaw (when odometry or NHC sees them; roll is held),
+// the IMU time offset, the odometer scale (with wheel speeds), gyro and accelerometer biases
+// (constant over the log; their drift is allowed for in the preintegration covariance). Their std
+// devs come from ceres::Covariance, scaled up by the fit's variance factor when residuals are
+// larger than their stated noise (never down).
+#pragma once
+
+#include "calibration/calibration_log.hpp"
+#include "calibration/calibration_result.hpp"
+
+namespace navfuse::calib {
+
+struct CalibrationOptions {
+  double max_epoch_spacing_s = 0.5;
+  double max_imu_gap_s = 1.0;
+  int max_iterations = 50;
+  double huber_sigmas = 2.0;  // whitened residual beyond which a loss grows linearly
+  double lever_arm_prior_std_m = 0.5;  // around the configured lever arm (gnss_factors.hpp LeverArmPrior)
+  int threads = 2;
+  int max_passes = 4;               // relinearisations about the estimated time offset
+  double offset_tolerance_s = 2e-4;  // ... until it moves less than this
+};
+
+// Never throws on bad data: a log that cannot be calibrated comes back with `message` saying why
+// and converged = false.
+CalibrationResult calibrate(const CalibrationLog& log, const CalibrationOptions& options = {});
+
+}  // namespace navfuse::calib

@@ -1,0 +1,53 @@
+// What the calibration found: each installation parameter with its std dev (from the solver's
+// covariance, ceres::Covariance), and how the solve went.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <Eigen/Core>
+
+namespace navfuse::calib {
+
+struct Estimate3 {
+  Eigen::Vector3d value = Eigen::Vector3d::Zero();
+  Eigen::Vector3d std = Eigen::Vector3d::Zero();  // 0: not estimated (held at the configured value)
+};
+struct Estimate1 {
+  double value = 0.0;
+  double std = 0.0;
+};
+
+struct CalibrationResult {
+  Estimate3 gnss_lever_arm_m;    // vehicle frame
+  Estimate3 mounting_rpy_rad;    // sensor -> vehicle; roll held at the configured value (std 0)
+  bool mounting_estimated = false;  // false: no odometry/NHC saw it
+  // The IMU reported in the vehicle frame (the device's own mounting): the mounting is then a
+  // residual about the vehicle axes, not the config key's sensor -> vehicle rotation.
+  bool mounting_is_residual = false;
+  Estimate1 imu_time_offset_s;   // the config key's meaning: added to IMU stamps
+  std::optional<Estimate1> odometer_scale;  // measured / true speed; none without wheel speeds
+  Estimate3 gyro_bias_rps;       // sensor frame, constant over the log
+  Estimate3 accel_bias_mps2;
+  Estimate3 gyro_scale;   // fractional scale-factor errors, sensor frame (measured = (1 + s) true)
+  Estimate3 accel_scale;
+
+  // The solve.
+  std::uint64_t epochs = 0;           // states
+  std::uint64_t imu_factors = 0;
+  std::uint64_t gnss_position_residuals = 0;
+  std::uint64_t gnss_velocity_residuals = 0;
+  std::uint64_t speed_residuals = 0;
+  std::uint64_t nhc_residuals = 0;
+  int iterations = 0;
+  double initial_cost = 0.0;
+  double final_cost = 0.0;
+  double position_rms_m = 0.0;  // GNSS position residual RMS after the fit (antenna, metres)
+  double wall_s = 0.0;
+  bool converged = false;
+  bool covariance_ok = false;
+  std::string message;  // solver's report, or why nothing was solved
+};
+
+}  // namespace navfuse::calib

@@ -1,0 +1,116 @@
+// GNSS residuals at an epoch: the antenna's position (and velocity) predicted from the IMU state
+// through the lever arm, the mounting and the IMU clock offset, minus the receiver's, whitened by
+// the receiver's covariance (scaled as the filter scales it).
+//
+// The fix at GNSS time t_g is the state at IMU stamp t_g - dt_imu (imu.time_offset_s: added to
+// IMU stamps to put them on the GNSS base). The state sits at IMU stamp t_k close to it, so with
+// tau = t_g - t_k the antenna is moved by its velocity over tau - dt_imu (p(t + dt) ~ p + v dt,
+// the first-order shift; tau - dt_imu stays within the IMU period plus the offset's correction).
+//   antenna position  p + R C_sv l + v_a (tau - dt_imu),  v_a = v + R (omega_s x C_sv l)
+//   antenna velocity  v_a + a (tau - dt_imu)
+// omega_s (bias-compensated rate) and a (the acceleration) at the epoch are known terms from the
+// starting solution. Mounting roll is held (unobservable from odometry; a constant of the factor).
+// Blocks: p, v, q, lever arm (vehicle frame), mounting [pitch, yaw], dt_imu.
+#pragma once
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "calibration/mounting_rotation.hpp"
+
+namespace navfuse::calib {
+
+// What GNSS factors share at one epoch.
+struct EpochKnowns {
+  double mount_roll_rad = 0.0;
+  Eigen::Vector3d rate_s_rps = Eigen::Vector3d::Zero();   // angular rate w.r.t. the earth, sensor frame
+  Eigen::Vector3d accel_t_mps2 = Eigen::Vector3d::Zero();  // acceleration, tangent frame
+};
+
+// U with U^T U = cov^-1.
+inline Eigen::Matrix3d sqrt_information(const Eigen::Matrix3d& cov) {
+  const Eigen::Matrix3d info = cov.inverse();
+  return Eigen::LLT<Eigen::Matrix3d>(0.5 * (info + info.transpose())).matrixU();
+}
+
+template <typename T>
+Eigen::Matrix<T, 3, 1> antenna_velocity(const Eigen::Matrix<T, 3, 1>& v, const Eigen::Matrix<T, 3, 3>& r,
+                                        const Eigen::Matrix<T, 3, 1>& lever_s, const EpochKnowns& k) {
+  return v + r * cross(Eigen::Matrix<T, 3, 1>(k.rate_s_rps.cast<T>()), lever_s);
+}
+
+class GnssPositionFactor {
+ public:
+  GnssPositionFactor(const Eigen::Vector3d& pos_t, const Eigen::Matrix3d& cov_t, double tau_s, const EpochKnowns& k)
+      : pos_(pos_t), sqrt_info_(sqrt_information(cov_t)), tau_(tau_s), k_(k) {}
+
+  template <typename T>
+  bool operator()(const T* p, const T* v, const T* q, const T* lever, const T* mount, const T* dt, T* out) const {
+    using V3 = Eigen::Matrix<T, 3, 1>;
+    const Eigen::Matrix<T, 3, 3> r = Eigen::Map<const Eigen::Quaternion<T>>(q).toRotationMatrix();
+    const V3 lever_s = dcm_from_rpy(T(k_.mount_roll_rad), mount[0], mount[1]).transpose() * Eigen::Map<const V3>(lever);
+    const V3 va = antenna_velocity(V3(Eigen::Map<const V3>(v)), r, lever_s, k_);
+    const V3 predicted = Eigen::Map<const V3>(p) + r * lever_s + va * (T(tau_) - dt[0]);
+    Eigen::Map<V3> res(out);
+    res = sqrt_info_.cast<T>() * (predicted - pos_.cast<T>());
+    return true;
+  }
+
+ private:
+  Eigen::Vector3d pos_;
+  Eigen::Matrix3d sqrt_info_;
+  double tau_;
+  EpochKnowns k_;
+};
+
+class GnssVelocityFactor {
+ public:
+  GnssVelocityFactor(const Eigen::Vector3d& vel_t, const Eigen::Matrix3d& cov_t, double tau_s, const EpochKnowns& k)
+      : vel_(vel_t), sqrt_info_(sqrt_information(cov_t)), tau_(tau_s), k_(k) {}
+
+  template <typename T>
+  bool operator()(const T* v, const T* q, const T* lever, const T* mount, const T* dt, T* out) const {
+    using V3 = Eigen::Matrix<T, 3, 1>;
+    const Eigen::Matrix<T, 3, 3> r = Eigen::Map<const Eigen::Quaternion<T>>(q).toRotationMatrix();
+    const V3 lever_s = dcm_from_rpy(T(k_.mount_roll_rad), mount[0], mount[1]).transpose() * Eigen::Map<const V3>(lever);
+    const V3 predicted =
+        antenna_velocity(V3(Eigen::Map<const V3>(v)), r, lever_s, k_) + k_.accel_t_mps2.cast<T>() * (T(tau_) - dt[0]);
+    Eigen::Map<V3> res(out);
+    res = sqrt_info_.cast<T>() * (predicted - vel_.cast<T>());
+    return true;
+  }
+
+ private:
+  Eigen::Vector3d vel_;
+  Eigen::Matrix3d sqrt_info_;
+  double tau_;
+  EpochKnowns k_;
+};
+
+}  // namespace navfuse::calib
+
+namespace navfuse::calib {
+
+// A prior on a 3-vector parameter: the lever arm around its configured value, the IMU scale
+// factors around zero (their data-sheet std: x and y gyro scale are barely seen on a drive).
+//
+// The lever arm's: a broad prior around its configured value. The component along the vertical
+// is seen only through changes of roll and pitch (p_z + l_z is what GNSS measures when level):
+// on a flat drive nothing else fixes it, and without the prior the solver wanders along that
+// direction. The prior's std then comes back as the estimate's: "not observed".
+class VectorPrior {
+ public:
+  VectorPrior(const Eigen::Vector3d& mean, double std) : lever_(mean), inv_std_(1.0 / std) {}
+  template <typename T>
+  bool operator()(const T* x, T* out) const {
+    for (int i = 0; i < 3; ++i) out[i] = (x[i] - T(lever_[i])) * T(inv_std_);
+    return true;
+  }
+
+ private:
+  Eigen::Vector3d lever_;
+  double inv_std_;
+};
+
+}  // namespace navfuse::calib
