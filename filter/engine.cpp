@@ -220,7 +220,7 @@ const NavSolution& Engine::solution() const {
 }
 
 void Engine::fill_solution() const {
-  fill_nav_solution(core_, options_, imu_time_source_, solution_);
+  fill_nav_solution(core_, options_, imu_input_.mounting(), imu_time_source_, solution_);
   solution_dirty_ = false;
 }
 

@@ -29,7 +29,7 @@ Eigen::Matrix3d euler_from_phi(const Eigen::Vector3d& rpy) {
 
 void fill_state_fields(const NavState& x, const Covariance& p, const Eigen::Vector3d& rate_b_rps,
                        const Eigen::Vector3d& force_b_mps2, const Eigen::Vector3d& gravity_ned_mps2,
-                       const FilterOptions& o, NavSolution& out) {
+                       const Eigen::Matrix3d& c_vs, NavSolution& out) {
   out.lat_rad = x.lat_rad;
   out.lon_rad = x.lon_rad;
   out.height_m = x.height_m;
@@ -50,7 +50,7 @@ void fill_state_fields(const NavState& x, const Covariance& p, const Eigen::Vect
       (m * p.block<3, 3>(sx::kAtt, sx::kAtt) * m.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
 
   // Biases are estimated in the vehicle frame and reported in the sensor frame (MIP convention).
-  const Eigen::Matrix3d c_sv = rot::dcm_from_rpy(o.mounting_rpy_rad).transpose();
+  const Eigen::Matrix3d c_sv = c_vs.transpose();
   out.gyro_bias_rps = c_sv * x.gyro_bias_rps;
   out.accel_bias_mps2 = c_sv * x.accel_bias_mps2;
   out.gyro_bias_std_rps =
@@ -63,8 +63,8 @@ void fill_state_fields(const NavState& x, const Covariance& p, const Eigen::Vect
   out.linear_accel_mps2 = force_b_mps2 + c_nb.transpose() * gravity_ned_mps2;
 }
 
-void fill_nav_solution(const FilterCore& c, const FilterOptions& o, TimeSource time_source,
-                       NavSolution& out) {
+void fill_nav_solution(const FilterCore& c, const FilterOptions& o, const Eigen::Matrix3d& c_vs,
+                       TimeSource time_source, NavSolution& out) {
   const NavState& x = c.x;
   const ModeState& mode = c.mode;
   out = NavSolution{};
@@ -84,7 +84,7 @@ void fill_nav_solution(const FilterCore& c, const FilterOptions& o, TimeSource t
     out.gnss_fix = c.gnss.last_fix;
   }
 
-  fill_state_fields(x, c.ekf.p, c.rate_b_rps, c.force_b_mps2, c.earth.gravity_ned_mps2, o, out);
+  fill_state_fields(x, c.ekf.p, c.rate_b_rps, c.force_b_mps2, c.earth.gravity_ned_mps2, c_vs, out);
   // Until the heading is known its error state is held at zero (relative heading, not
   // estimated): the covariance says nothing of it, so report the std of no knowledge at all.
   if (!mode.heading_known) out.att_std_rpy_rad.z() = kUnknownHeadingStd_rad;

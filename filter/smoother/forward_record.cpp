@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include "core/rotation/rotation.hpp"
 #include "filter/process_model.hpp"
 #include "filter/solution.hpp"
 
@@ -281,7 +282,7 @@ void record_imu(FilterCore& c, const FilterOptions& o) {
   c.record.after_strapdown = c.x;
   // The forward solution's words (mode, fix in use, validity, status), as replay reports them.
   NavSolution s;
-  fill_nav_solution(c, o, TimeSource::kUnknown, s);
+  fill_nav_solution(c, o, rot::dcm_from_rpy(o.mounting_rpy_rad), TimeSource::kUnknown, s);
   Out out(scratch);
   out.put(c.x);
   out.put(c.rate_b_rps);
