@@ -46,6 +46,7 @@
 #include "filter/filter_stats.hpp"
 #include "filter/imu_input.hpp"
 #include "filter/ring_buffer.hpp"
+#include "filter/solution.hpp"
 
 namespace navfuse::filter {
 
@@ -63,6 +64,8 @@ class Engine {
   void process(const Measurement& m);
 
   const NavSolution& solution() const;
+  // What solution() is computed from (filter/solution.hpp), for a caller that fills it elsewhere.
+  void capture_solution(SolutionInputs& in) const;
   bool solution_valid() const;
   std::uint64_t imu_epoch() const { return imu_epoch_; }
   const FilterStats& stats() const;
@@ -141,6 +144,7 @@ class Engine {
   mutable FilterStats stats_view_;
   InnovationSink innovation_sink_ = nullptr;
   void* innovation_context_ = nullptr;
+  mutable SolutionInputs solution_inputs_;
   mutable NavSolution solution_;
   mutable bool solution_dirty_ = true;
 };

@@ -40,9 +40,10 @@ class ReplayObserver final : public FusionObserver {
   ReplayObserver(PoseOutputs& outputs, TruthAccuracy* accuracy) : accuracy_(accuracy) {
     if (!outputs.empty()) writer_.emplace(outputs);
   }
-  // What the observer needs filled: writers see every epoch, truth only poses.
+  // What the observer needs filled: writers see every epoch (filled on their thread), truth
+  // only poses.
   FusionRunner::Solutions solutions() const {
-    if (writer_) return FusionRunner::Solutions::kEvery;
+    if (writer_) return FusionRunner::Solutions::kDeferred;
     return accuracy_ ? FusionRunner::Solutions::kPoses : FusionRunner::Solutions::kNone;
   }
   // --gnss-outage: truth scoring marks the same windows (they start at the first IMU sample).
@@ -56,7 +57,14 @@ class ReplayObserver final : public FusionObserver {
       plan_.reset();
     }
     if (writer_) writer_->post(epoch);
-    if (accuracy_ && epoch.pose_due) accuracy_->add(epoch.solution);
+    if (accuracy_ && epoch.pose_due) {
+      if (epoch.solution_deferred) {
+        filter::fill_nav_solution(epoch.solution_inputs, truth_scratch_);
+        accuracy_->add(truth_scratch_);
+      } else {
+        accuracy_->add(epoch.solution);
+      }
+    }
   }
   // Inside the timed run: the summary's rate includes writing the last epochs.
   void on_finished() override {
@@ -68,6 +76,7 @@ class ReplayObserver final : public FusionObserver {
   std::optional<GnssOutagePlan> plan_;  // until handed to accuracy_
   const FusionRunner* runner_ = nullptr;
   std::optional<PoseOutputThread> writer_;
+  NavSolution truth_scratch_;  // a pose's solution for truth scoring when the writers fill theirs
 };
 
 // The one-line reason a replay produced nothing useful, or "" when it did (see ReplayResult).
