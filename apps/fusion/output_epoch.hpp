@@ -14,7 +14,7 @@ struct OutputEpoch {
   NavSolution solution;                // the filter's solution at this IMU sample
   // FusionRunner::Solutions::kDeferred: `solution` is left empty and these are what it is
   // computed from, so that the thread that writes the epoch fills it (fill_deferred_solution).
-  filter::SolutionInputs solution_inputs;
+  filter::SolutionInputs solution_inputs{};
   bool solution_deferred = false;
   bool pose_due = false;               // output.rate_hz says a pose goes out at this epoch
   bool gnss_updated = false;           // pose_due, and a GNSS position was fused since the last pose
