@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/cpu/cpu_features.hpp"
 #include "core/rotation/rotation.hpp"
 #include "filter/active_dimension.hpp"
 
@@ -153,13 +154,6 @@ __attribute__((target("avx2"))) void discrete_step_avx2(Covariance& p, const Sys
                                                         double t) {
   discrete_step<N>(p, f, q, t);
 }
-bool cpu_has_avx2() {
-  static const bool avx2 = [] {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2") != 0;
-  }();
-  return avx2;
-}
 #endif
 
 }  // namespace
@@ -237,7 +231,7 @@ void propagate_covariance(Covariance& p, int n, const NavState& x, const LocalEa
   const SystemMatrix f = system_matrix(x, earth, step);
   with_active_dimension(n, [&](auto dim) {
 #if defined(__x86_64__)
-    if (cpu_has_avx2()) return discrete_step_avx2<decltype(dim)::value>(p, f, q, t);
+    if (cpu::has_avx2()) return discrete_step_avx2<decltype(dim)::value>(p, f, q, t);
 #endif
     discrete_step_baseline<decltype(dim)::value>(p, f, q, t);
   });
