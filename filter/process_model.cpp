@@ -225,13 +225,15 @@ SystemMatrix system_matrix(const NavState& x, const LocalEarth& earth, const Pro
 }
 
 void propagate_covariance(Covariance& p, int n, const NavState& x, const LocalEarth& earth,
-                          const ProcessAccumulator& step, const StateVector& q) {
+                          const ProcessAccumulator& step, const StateVector& q, CovarianceKernel kernel) {
   const double t = step.dt_s;
   if (t <= 0.0) return;
   const SystemMatrix f = system_matrix(x, earth, step);
   with_active_dimension(n, [&](auto dim) {
 #if defined(__x86_64__)
-    if (cpu::has_avx2()) return discrete_step_avx2<decltype(dim)::value>(p, f, q, t);
+    if (kernel == CovarianceKernel::kFastest && cpu::has_avx2()) {
+      return discrete_step_avx2<decltype(dim)::value>(p, f, q, t);
+    }
 #endif
     discrete_step_baseline<decltype(dim)::value>(p, f, q, t);
   });
