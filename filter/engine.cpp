@@ -233,8 +233,13 @@ const NavSolution& Engine::solution() const {
 }
 
 void Engine::fill_solution() const {
-  fill_nav_solution(core_, options_, imu_time_source_, solution_);
+  capture_solution(solution_inputs_);
+  fill_nav_solution(solution_inputs_, solution_);
   solution_dirty_ = false;
+}
+
+void Engine::capture_solution(SolutionInputs& in) const {
+  filter::capture_solution(core_, options_, imu_input_.mounting(), imu_time_source_, in);
 }
 
 bool Engine::solution_valid() const {

@@ -47,6 +47,7 @@
 #include "filter/imu_input.hpp"
 #include "filter/measurement_kinds.hpp"
 #include "filter/ring_buffer.hpp"
+#include "filter/solution.hpp"
 
 namespace navfuse::filter {
 
@@ -67,6 +68,8 @@ class Engine {
   bool fuses(MeasurementKind kind) const { return is_fused(kind) && options_.fuses(kind); }
 
   const NavSolution& solution() const;
+  // What solution() is computed from (filter/solution.hpp), for a caller that fills it elsewhere.
+  void capture_solution(SolutionInputs& in) const;
   bool solution_valid() const;
   std::uint64_t imu_epoch() const { return imu_epoch_; }
   const FilterStats& stats() const;
@@ -148,6 +151,7 @@ class Engine {
   mutable FilterStats stats_view_;
   InnovationSink innovation_sink_ = nullptr;
   void* innovation_context_ = nullptr;
+  mutable SolutionInputs solution_inputs_;
   mutable NavSolution solution_;
   mutable bool solution_dirty_ = true;
 };

@@ -17,6 +17,7 @@ class ImuInput {
  public:
   // Sensor -> vehicle rotation (the configured mounting, MIP 0x0C,0x31 convention).
   void set_mounting(const Eigen::Matrix3d& c_vs) { c_vs_ = c_vs; }
+  const Eigen::Matrix3d& mounting() const { return c_vs_; }
   void reset() { have_previous_ = false; }
   bool has_previous() const { return have_previous_; }
   std::int64_t previous_time_ns() const { return previous_time_ns_; }

@@ -1,11 +1,14 @@
 #include "filter/process_model.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cassert>
+#include <cstddef>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "core/cpu/cpu_features.hpp"
 #include "core/rotation/rotation.hpp"
 #include "filter/active_dimension.hpp"
 
@@ -60,12 +63,16 @@ namespace {
 // for three dense products.
 // Q_d = Q T + (F Q + Q F^T) T^2 / 2: the first two terms of the series for
 // integral(Phi Q Phi^T), exact enough at T <= 50 ms; its F Q T^2 / 2 part is again R x N.
+//
+// The loops run on plain arrays laid out so that each multiply-add sweeps contiguous memory
+// (P A^T column-wise, G (P A^T) row-wise through a transposed copy) and the symmetrised result
+// is written straight from the sums, one pass over the upper triangle: half the instructions of
+// the same arithmetic on Eigen blocks. Every entry gets exactly the operations, in the same
+// order, of the formulas above, so the result does not depend on the layout.
 template <int N>
-void discrete_step(Covariance& p, const SystemMatrix& f, const StateVector& q, double t) {
+[[gnu::always_inline]] inline void discrete_step(Covariance& p, const SystemMatrix& f, const StateVector& q, double t) {
   constexpr int R = sx::kDynamicCount;
   static_assert(N >= R, "the active block always holds position, velocity and attitude");
-  using Cols = Eigen::Matrix<double, N, R>;
-  using Block = Eigen::Matrix<double, N, N>;
   // G = F T within the active block, and H, its leading R x R block. Subsets of f's entries,
   // which push() checked as system_matrix built them: here only debug builds check again.
   SystemMatrix g, h;
@@ -75,29 +82,79 @@ void discrete_step(Covariance& p, const SystemMatrix& f, const StateVector& q, d
     g.entries[static_cast<std::size_t>(g.count++)] = {e.row, e.col, e.value * t};
     if (e.col < R) h.entries[static_cast<std::size_t>(h.count++)] = {e.row, e.col, e.value * t};
   }
-  const Block pn = p.template topLeftCorner<N, N>();
+  const double* pc = p.data();  // column-major, leading dimension sx::kCount
+  auto p_col = [&](int col) { return pc + static_cast<std::ptrdiff_t>(col) * sx::kCount; };
 
-  // W = P G^T: column i gathers G(i, k) P.col(k).
-  Cols w = Cols::Zero();
-  for (const SystemMatrix::Entry& e : g) w.col(e.row) += e.value * pn.col(e.col);
-  // P A^T = W + W H^T / 2.
-  Cols pat = w;
-  for (const SystemMatrix::Entry& e : h) pat.col(e.row) += (0.5 * e.value) * w.col(e.col);
-  // Y = G (P A^T), then A P A^T = Y + H Y / 2.
-  Eigen::Matrix<double, R, R> y = Eigen::Matrix<double, R, R>::Zero();
-  for (const SystemMatrix::Entry& e : g) y.row(e.row) += e.value * pat.row(e.col);
-  Eigen::Matrix<double, R, R> apat = y;
-  for (const SystemMatrix::Entry& e : h) apat.row(e.row) += (0.5 * e.value) * y.row(e.col);
+  // W = P G^T (N x R, w[i] is column i): column i gathers G(i, k) P.col(k).
+  double w[R][N] = {};
+  for (const SystemMatrix::Entry& e : g) {
+    const double* pk = p_col(e.col);
+    for (int r = 0; r < N; ++r) w[e.row][r] += e.value * pk[r];
+  }
+  // P A^T = W + W H^T / 2 (N x R, by columns).
+  double pat[R][N];
+  std::copy(&w[0][0], &w[0][0] + R * N, &pat[0][0]);
+  for (const SystemMatrix::Entry& e : h) {
+    const double v = 0.5 * e.value;
+    for (int r = 0; r < N; ++r) pat[e.row][r] += v * w[e.col][r];
+  }
+  // Y = G (P A^T) (R x R, by rows), through the rows of P A^T; then A P A^T = Y + H Y / 2.
+  double pat_rows[N][R];
+  for (int c = 0; c < R; ++c) {
+    for (int r = 0; r < N; ++r) pat_rows[r][c] = pat[c][r];
+  }
+  double y[R][R] = {};
+  for (const SystemMatrix::Entry& e : g) {
+    for (int c = 0; c < R; ++c) y[e.row][c] += e.value * pat_rows[e.col][c];
+  }
+  double apat[R][R];
+  std::copy(&y[0][0], &y[0][0] + R * R, &apat[0][0]);
+  for (const SystemMatrix::Entry& e : h) {
+    const double v = 0.5 * e.value;
+    for (int c = 0; c < R; ++c) apat[e.row][c] += v * y[e.col][c];
+  }
   // Q F^T T^2 / 2 (N x R): entry (k, i) = q_k G(i, k) T / 2.
-  for (const SystemMatrix::Entry& e : g) pat(e.col, e.row) += q(e.col) * e.value * (0.5 * t);
+  for (const SystemMatrix::Entry& e : g) pat[e.row][e.col] += q(e.col) * e.value * (0.5 * t);
 
-  Block next = pn;
-  next.template leftCols<R>() += pat;
-  next.template topRows<R>() += pat.transpose();
-  next.template topLeftCorner<R, R>() += apat;
-  next.diagonal() += q.template head<N>() * t;
-  p.template topLeftCorner<N, N>() = 0.5 * (next + next.transpose());
+  // next = P + P A^T (left R columns) + (P A^T)^T (top R rows) + A P A^T + Q T (diagonal), and
+  // P <- (next + next^T) / 2, each pair of mirrored entries from one evaluation. By region:
+  // both indices below R get every term, one of them below R only the P A^T term it lies in,
+  // none below R only the diagonal noise.
+  auto store = [&](int row, int col, double next_rc, double next_cr) {
+    const double sym = 0.5 * (next_rc + next_cr);
+    p(row, col) = sym;
+    p(col, row) = sym;
+  };
+  for (int col = 0; col < R; ++col) {
+    for (int row = 0; row < col; ++row) {
+      store(row, col, p_col(col)[row] + pat[col][row] + pat[row][col] + apat[row][col],
+            p_col(row)[col] + pat[row][col] + pat[col][row] + apat[col][row]);
+    }
+    const double d = p_col(col)[col] + pat[col][col] + pat[col][col] + apat[col][col] + q(col) * t;
+    store(col, col, d, d);
+  }
+  for (int col = R; col < N; ++col) {
+    for (int row = 0; row < R; ++row) store(row, col, p_col(col)[row] + pat[row][col], p_col(row)[col] + pat[row][col]);
+    for (int row = R; row < col; ++row) store(row, col, p_col(col)[row], p_col(row)[col]);
+    const double d = p_col(col)[col] + q(col) * t;
+    store(col, col, d, d);
+  }
 }
+
+// The same step compiled twice: for the x86-64 baseline (SSE2) and for AVX2, whose 4-wide
+// vectors halve the instructions of the column loops on CPUs that have it (chosen at run time).
+// Neither enables FMA, so both round every product and sum alike: identical results.
+template <int N>
+void discrete_step_baseline(Covariance& p, const SystemMatrix& f, const StateVector& q, double t) {
+  discrete_step<N>(p, f, q, t);
+}
+#if defined(__x86_64__)
+template <int N>
+__attribute__((target("avx2"))) void discrete_step_avx2(Covariance& p, const SystemMatrix& f, const StateVector& q,
+                                                        double t) {
+  discrete_step<N>(p, f, q, t);
+}
+#endif
 
 }  // namespace
 
@@ -168,11 +225,18 @@ SystemMatrix system_matrix(const NavState& x, const LocalEarth& earth, const Pro
 }
 
 void propagate_covariance(Covariance& p, int n, const NavState& x, const LocalEarth& earth,
-                          const ProcessAccumulator& step, const StateVector& q) {
+                          const ProcessAccumulator& step, const StateVector& q, CovarianceKernel kernel) {
   const double t = step.dt_s;
   if (t <= 0.0) return;
   const SystemMatrix f = system_matrix(x, earth, step);
-  with_active_dimension(n, [&](auto dim) { discrete_step<decltype(dim)::value>(p, f, q, t); });
+  with_active_dimension(n, [&](auto dim) {
+#if defined(__x86_64__)
+    if (kernel == CovarianceKernel::kFastest && cpu::has_avx2()) {
+      return discrete_step_avx2<decltype(dim)::value>(p, f, q, t);
+    }
+#endif
+    discrete_step_baseline<decltype(dim)::value>(p, f, q, t);
+  });
 }
 
 }  // namespace navfuse::filter

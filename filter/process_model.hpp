@@ -80,9 +80,14 @@ inline constexpr std::array<NeglectedTerm, 4> kSystemMatrixNeglected{{
      "(0.4 % below the normal-gravity one, 1.2e-8 /s^2)"},
 }};
 
+// Which compiled variant of the covariance step runs: the fastest this CPU has (AVX2 where
+// cpu::has_avx2()) or the x86-64 baseline. Neither uses FMA, so both give the same bits; the
+// choice exists for the test that shows it.
+enum class CovarianceKernel { kFastest, kBaseline };
+
 // P <- Phi P Phi^T + Q_d over the accumulated step (a no-op for an empty step).
 void propagate_covariance(Covariance& p, int active_dimension, const NavState& x,
                           const LocalEarth& earth, const ProcessAccumulator& step,
-                          const StateVector& noise_density);
+                          const StateVector& noise_density, CovarianceKernel kernel = CovarianceKernel::kFastest);
 
 }  // namespace navfuse::filter

@@ -27,9 +27,23 @@ Eigen::Matrix3d euler_from_phi(const Eigen::Vector3d& rpy) {
 
 }  // namespace
 
-void fill_state_fields(const NavState& x, const Covariance& p, const Eigen::Vector3d& rate_b_rps,
-                       const Eigen::Vector3d& force_b_mps2, const Eigen::Vector3d& gravity_ned_mps2,
-                       const FilterOptions& o, NavSolution& out) {
+void capture_state_fields(const NavState& x, const Covariance& p, const Eigen::Vector3d& rate_b_rps,
+                          const Eigen::Vector3d& force_b_mps2, const Eigen::Vector3d& gravity_ned_mps2,
+                          const Eigen::Matrix3d& c_vs, StateFieldInputs& in) {
+  in.x = x;
+  in.pos_cov = p.block<3, 3>(sx::kPos, sx::kPos);
+  in.vel_cov = p.block<3, 3>(sx::kVel, sx::kVel);
+  in.att_cov = p.block<3, 3>(sx::kAtt, sx::kAtt);
+  in.gyro_bias_cov = p.block<3, 3>(sx::kGyroBias, sx::kGyroBias);
+  in.accel_bias_cov = p.block<3, 3>(sx::kAccelBias, sx::kAccelBias);
+  in.c_vs = c_vs;
+  in.rate_b_rps = rate_b_rps;
+  in.force_b_mps2 = force_b_mps2;
+  in.gravity_ned_mps2 = gravity_ned_mps2;
+}
+
+void fill_state_fields(const StateFieldInputs& in, NavSolution& out) {
+  const NavState& x = in.x;
   out.lat_rad = x.lat_rad;
   out.lon_rad = x.lon_rad;
   out.height_m = x.height_m;
@@ -43,34 +57,32 @@ void fill_state_fields(const NavState& x, const Covariance& p, const Eigen::Vect
   out.q_nb = x.q_nb;
   out.rpy_rad = rot::rpy_from_quat(x.q_nb);
 
-  out.pos_std_ned_m = p.block<3, 3>(sx::kPos, sx::kPos).diagonal().cwiseMax(0.0).cwiseSqrt();
-  out.vel_std_ned_mps = p.block<3, 3>(sx::kVel, sx::kVel).diagonal().cwiseMax(0.0).cwiseSqrt();
+  out.pos_std_ned_m = in.pos_cov.diagonal().cwiseMax(0.0).cwiseSqrt();
+  out.vel_std_ned_mps = in.vel_cov.diagonal().cwiseMax(0.0).cwiseSqrt();
   const Eigen::Matrix3d m = euler_from_phi(out.rpy_rad);
-  out.att_std_rpy_rad =
-      (m * p.block<3, 3>(sx::kAtt, sx::kAtt) * m.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
+  out.att_std_rpy_rad = (m * in.att_cov * m.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
 
   // Biases are estimated in the vehicle frame and reported in the sensor frame (MIP convention).
-  const Eigen::Matrix3d c_sv = rot::dcm_from_rpy(o.mounting_rpy_rad).transpose();
+  const Eigen::Matrix3d c_sv = in.c_vs.transpose();
   out.gyro_bias_rps = c_sv * x.gyro_bias_rps;
   out.accel_bias_mps2 = c_sv * x.accel_bias_mps2;
-  out.gyro_bias_std_rps =
-      (c_sv * p.block<3, 3>(sx::kGyroBias, sx::kGyroBias) * c_sv.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
-  out.accel_bias_std_mps2 =
-      (c_sv * p.block<3, 3>(sx::kAccelBias, sx::kAccelBias) * c_sv.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
+  out.gyro_bias_std_rps = (c_sv * in.gyro_bias_cov * c_sv.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
+  out.accel_bias_std_mps2 = (c_sv * in.accel_bias_cov * c_sv.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
 
-  out.gravity_ned_mps2 = gravity_ned_mps2;
-  out.angular_rate_rps = rate_b_rps;
-  out.linear_accel_mps2 = force_b_mps2 + c_nb.transpose() * gravity_ned_mps2;
+  out.gravity_ned_mps2 = in.gravity_ned_mps2;
+  out.angular_rate_rps = in.rate_b_rps;
+  out.linear_accel_mps2 = in.force_b_mps2 + c_nb.transpose() * in.gravity_ned_mps2;
 }
 
-void fill_nav_solution(const FilterCore& c, const FilterOptions& o, TimeSource time_source,
-                       NavSolution& out) {
+void capture_solution(const FilterCore& c, const FilterOptions& o, const Eigen::Matrix3d& c_vs,
+                      TimeSource time_source, SolutionInputs& in) {
   const NavState& x = c.x;
   const ModeState& mode = c.mode;
-  out = NavSolution{};
-  out.header.time_ns = x.time_ns;
-  out.header.time_source = time_source;
-  out.mode = mode.mode;
+  in.header = MeasurementHeader{};
+  in.header.time_ns = x.time_ns;
+  in.header.time_source = time_source;
+  in.mode = mode.mode;
+  in.heading_known = mode.heading_known;
   const bool navigating = mode.mode == NavMode::kNavigation || mode.mode == NavMode::kDeadReckoning;
   // Before the heading is known (vertical gyro) the filter already holds the position of the GNSS
   // fixes (placed at each, place_at_fix) and, moving, their velocity (reset to each) or, at rest,
@@ -80,35 +92,46 @@ void fill_nav_solution(const FilterCore& c, const FilterOptions& o, TimeSource t
   const bool velocity_known =
       navigating || (position_known && (c.stationary.stationary ||
                                         seconds_since(x.time_ns, c.gnss.last_velocity_ns) <= o.gnss_timeout_s));
+  in.gnss_fix = GnssFixType::kNone;
   if ((mode.mode == NavMode::kNavigation || (!navigating && position_known)) && gnss_current) {
-    out.gnss_fix = c.gnss.last_fix;
+    in.gnss_fix = c.gnss.last_fix;
   }
 
-  fill_state_fields(x, c.ekf.p, c.rate_b_rps, c.force_b_mps2, c.earth.gravity_ned_mps2, o, out);
-  // Until the heading is known its error state is held at zero (relative heading, not
-  // estimated): the covariance says nothing of it, so report the std of no knowledge at all.
-  if (!mode.heading_known) out.att_std_rpy_rad.z() = kUnknownHeadingStd_rad;
+  capture_state_fields(x, c.ekf.p, c.rate_b_rps, c.force_b_mps2, c.earth.gravity_ned_mps2, c_vs, in.state);
 
   if (mode.levelled) {
-    out.header.valid |= NavSolution::kValidAttitude | NavSolution::kValidAttitudeStd | NavSolution::kValidBiases;
+    in.header.valid |= NavSolution::kValidAttitude | NavSolution::kValidAttitudeStd | NavSolution::kValidBiases;
   }
-  if (mode.levelled && mode.heading_known) out.header.valid |= NavSolution::kValidHeading;
-  if (position_known) out.header.valid |= NavSolution::kValidPosition | NavSolution::kValidPositionStd;
-  if (velocity_known) out.header.valid |= NavSolution::kValidVelocity | NavSolution::kValidVelocityStd;
+  if (mode.levelled && mode.heading_known) in.header.valid |= NavSolution::kValidHeading;
+  if (position_known) in.header.valid |= NavSolution::kValidPosition | NavSolution::kValidPositionStd;
+  if (velocity_known) in.header.valid |= NavSolution::kValidVelocity | NavSolution::kValidVelocityStd;
 
-  if (mode.mode == NavMode::kDeadReckoning) out.status_flags |= NavSolution::kStatusGnssOutage;
-  if (c.stationary.stationary) out.status_flags |= NavSolution::kStatusStationary;
-  if (mode.diverged) out.status_flags |= NavSolution::kStatusDiverged;
+  in.status_flags = 0;
+  if (mode.mode == NavMode::kDeadReckoning) in.status_flags |= NavSolution::kStatusGnssOutage;
+  if (c.stationary.stationary) in.status_flags |= NavSolution::kStatusStationary;
+  if (mode.diverged) in.status_flags |= NavSolution::kStatusDiverged;
   if (seconds_since(x.time_ns, mode.last_imu_fault_ns) < kStatusHold_s) {
-    out.status_flags |= NavSolution::kStatusImuFault;
+    in.status_flags |= NavSolution::kStatusImuFault;
   }
   if (navigating && seconds_since(x.time_ns, c.odometry.last_speed_ns) < kStatusHold_s) {
-    out.status_flags |= NavSolution::kStatusWheelAiding;
+    in.status_flags |= NavSolution::kStatusWheelAiding;
   }
   if (seconds_since(x.time_ns, c.gnss.last_heading_ns) < o.gnss_timeout_s) {
-    out.status_flags |= NavSolution::kStatusDualAntennaHeading;
+    in.status_flags |= NavSolution::kStatusDualAntennaHeading;
   }
-  if (c.gnss.baseline.offset_detected) out.status_flags |= NavSolution::kStatusHeadingOffset;
+  if (c.gnss.baseline.offset_detected) in.status_flags |= NavSolution::kStatusHeadingOffset;
+}
+
+void fill_nav_solution(const SolutionInputs& in, NavSolution& out) {
+  out = NavSolution{};
+  out.header = in.header;
+  out.mode = in.mode;
+  out.gnss_fix = in.gnss_fix;
+  out.status_flags = in.status_flags;
+  fill_state_fields(in.state, out);
+  // Until the heading is known its error state is held at zero (relative heading, not
+  // estimated): the covariance says nothing of it, so report the std of no knowledge at all.
+  if (!in.heading_known) out.att_std_rpy_rad.z() = kUnknownHeadingStd_rad;
 }
 
 }  // namespace navfuse::filter

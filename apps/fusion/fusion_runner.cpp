@@ -92,7 +92,10 @@ void FusionRunner::after_imu(const ImuSample& s, std::int64_t arrival_ns) {
   }
   epoch_.num_sats = num_sats_;
   epoch_.arrival_ns = arrival_ns;
-  if (solutions_ == Solutions::kEvery || (solutions_ == Solutions::kPoses && epoch_.pose_due)) {
+  epoch_.solution_deferred = solutions_ == Solutions::kDeferred;
+  if (epoch_.solution_deferred) {
+    engine_.capture_solution(epoch_.solution_inputs);
+  } else if (solutions_ == Solutions::kEvery || (solutions_ == Solutions::kPoses && epoch_.pose_due)) {
     epoch_.solution = engine_.solution();
   }
   observer_.on_epoch(epoch_, engine_);

@@ -48,7 +48,9 @@ class FusionObserver {
 class FusionRunner {
  public:
   // Which epochs carry a filled solution (filling it costs about as much as a filter step).
-  enum class Solutions { kNone, kPoses, kEvery };
+  // kDeferred: every epoch, as the inputs of the solution (OutputEpoch::solution_inputs), for an
+  // observer that fills it on another thread (replay's PoseOutputThread).
+  enum class Solutions { kNone, kPoses, kEvery, kDeferred };
   struct Options {
     double output_rate_hz = 0.0;  // output.rate_hz: 0 = a pose at every IMU epoch
     Solutions solutions = Solutions::kEvery;

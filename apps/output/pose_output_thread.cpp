@@ -31,7 +31,10 @@ void PoseOutputThread::run() {
   BatchPipe<OutputEpoch>::Batch batch;
   try {
     while (pipe_.take(batch)) {
-      for (const OutputEpoch& e : batch) outputs_.write(e);
+      for (OutputEpoch& e : batch) {
+        e.fill_deferred_solution();  // the filter thread only captured it
+        outputs_.write(e);
+      }
     }
   } catch (...) {
     pipe_.fail(std::current_exception());

@@ -46,9 +46,10 @@ class ReplayObserver final : public FusionObserver {
   ReplayObserver(PoseOutputs& outputs, TruthAccuracy* accuracy) : accuracy_(accuracy) {
     if (!outputs.empty()) writer_.emplace(outputs);
   }
-  // What the observer needs filled: writers see every epoch, truth only poses.
+  // What the observer needs filled: writers see every epoch (filled on their thread), truth
+  // only poses.
   FusionRunner::Solutions solutions() const {
-    if (writer_) return FusionRunner::Solutions::kEvery;
+    if (writer_) return FusionRunner::Solutions::kDeferred;
     return accuracy_ ? FusionRunner::Solutions::kPoses : FusionRunner::Solutions::kNone;
   }
   // --gnss-outage: truth scoring marks the same windows (they start at the first IMU sample).
@@ -62,9 +63,17 @@ class ReplayObserver final : public FusionObserver {
       plan_.reset();
     }
     if (writer_) writer_->post(epoch);
-    if (accuracy_ && epoch.pose_due) accuracy_->add(epoch.solution);
-    if (epoch.pose_due && (epoch.solution.mode == NavMode::kNavigation || epoch.solution.mode == NavMode::kDeadReckoning)) {
-      ++navigating_poses_;
+    if (accuracy_ && epoch.pose_due) {
+      if (epoch.solution_deferred) {
+        filter::fill_nav_solution(epoch.solution_inputs, truth_scratch_);
+        accuracy_->add(truth_scratch_);
+      } else {
+        accuracy_->add(epoch.solution);
+      }
+    }
+    if (epoch.pose_due) {
+      const NavMode mode = epoch.solution_deferred ? epoch.solution_inputs.mode : epoch.solution.mode;
+      if (mode == NavMode::kNavigation || mode == NavMode::kDeadReckoning) ++navigating_poses_;
     }
   }
   // Poses written in a navigating mode (counted only when there are writers: else the runner
@@ -85,6 +94,7 @@ class ReplayObserver final : public FusionObserver {
   std::optional<GnssOutagePlan> plan_;  // until handed to accuracy_
   const FusionRunner* runner_ = nullptr;
   std::optional<PoseOutputThread> writer_;
+  NavSolution truth_scratch_;  // a pose's solution for truth scoring when the writers fill theirs
   CalibrationCollector* collector_ = nullptr;
   std::uint64_t navigating_poses_ = 0;
 };

@@ -15,6 +15,8 @@
 // bytes R from a zero start is R x^32 mod P, which is what the CRC of the folded value is.
 #include "core/bytes/crc32_kernels.hpp"
 
+#include "core/cpu/cpu_features.hpp"
+
 #if defined(__x86_64__)
 #include <immintrin.h>
 #endif
@@ -97,13 +99,7 @@ __attribute__((target("pclmul,sse2"))) std::uint32_t crc32_clmul(std::span<const
   return crc32_slice8({p, n}, crc32_slice8(folded, 0));
 }
 
-bool crc32_clmul_available() {
-  static const bool available = [] {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("pclmul") != 0;
-  }();
-  return available;
-}
+bool crc32_clmul_available() { return cpu::has_pclmul(); }
 
 #else
 

@@ -7,6 +7,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
 
+#include "core/rotation/rotation.hpp"
 #include "filter/solution.hpp"
 
 namespace navfuse::filter {
@@ -200,7 +201,10 @@ NavSolution smoothed_solution(const SmoothedSample& s, const FilterOptions& o, T
   const bool navigating = f.mode == NavMode::kNavigation || f.mode == NavMode::kDeadReckoning;
   out.mode = navigating ? NavMode::kSmoothed : f.mode;
   out.gnss_fix = f.gnss_fix;
-  fill_state_fields(s.x, s.p, f.rate_b_rps, f.force_b_mps2, f.gravity_ned_mps2, o, out);
+  StateFieldInputs state;
+  capture_state_fields(s.x, s.p, f.rate_b_rps, f.force_b_mps2, f.gravity_ned_mps2, rot::dcm_from_rpy(o.mounting_rpy_rad),
+                       state);
+  fill_state_fields(state, out);
   out.header.valid |= f.valid;
   out.status_flags = f.status_flags;
   return out;

@@ -2,11 +2,13 @@
 // P' = Phi P Phi^T + Q T + (F Q + Q F^T) T^2 / 2 (Groves 2nd ed. §3.2.3 / §14.2.4), computed here
 // with plain full-size matrix products. The filter's version works on the non-zero rows of F
 // only; both must agree to rounding.
+#include <cstring>
 #include <random>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
 
+#include "core/cpu/cpu_features.hpp"
 #include "core/rotation/rotation.hpp"
 #include "filter/active_dimension.hpp"
 #include "filter/process_model.hpp"
@@ -81,6 +83,34 @@ TEST(ProcessModel, SparseStepMatchesDenseFormForEveryActiveDimension) {
     const Covariance expected = dense_reference(p0, n, f, q, step.dt_s);
     EXPECT_LT((p - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
     EXPECT_EQ((p - p.transpose()).cwiseAbs().maxCoeff(), 0.0);
+  }
+}
+
+// The AVX2 build of the step rounds every entry as the baseline build does (no FMA, same order
+// of operations), so the two give identical bits, and replay outputs do not depend on the CPU.
+TEST(ProcessModel, Avx2AndBaselineStepsGiveIdenticalBits) {
+  if (!cpu::has_avx2()) GTEST_SKIP() << "no AVX2 on this CPU: only the baseline step runs";
+  std::mt19937 rng(11);
+  NavState x;
+  x.lat_rad = 0.9;
+  x.height_m = -30.0;
+  x.vel_ned_mps = {31.0, 4.0, 0.2};
+  x.q_nb = rot::quat_from_rpy({0.2, -0.15, 0.7});
+  ProcessAccumulator step;
+  step.dt_s = 0.02;
+  step.dtheta_rad = {-0.01, 0.003, 0.02};
+  step.dvel_mps = {0.1, 0.05, -0.2};
+  const LocalEarth earth = LocalEarth::at(x.lat_rad, x.height_m);
+  StateVector q;
+  for (int i = 0; i < sx::kCount; ++i) q(i) = 3e-7 * (2 + i);
+  for (int n : kActiveDimensions) {
+    SCOPED_TRACE(n);
+    const Covariance p0 = random_covariance(n, rng);
+    Covariance fastest = p0, baseline = p0;
+    propagate_covariance(fastest, n, x, earth, step, q, CovarianceKernel::kFastest);
+    propagate_covariance(baseline, n, x, earth, step, q, CovarianceKernel::kBaseline);
+    EXPECT_FALSE(fastest == p0);  // the step did something
+    EXPECT_EQ(std::memcmp(fastest.data(), baseline.data(), sizeof(double) * fastest.size()), 0);
   }
 }
 
