@@ -173,6 +173,7 @@ void smooth_record(filter::ForwardRecorder& record, const FusionRunner& runner, 
        << " records replaced by re-propagation); " << pass.poses << " smoothed poses in " << pass.wall_s << " s\n";
   result.smoother_text = text.str();
   result.poses = pass.poses;
+  result.navigating_poses = pass.navigating_poses;
 }
 
 // --calibration-out: the calibration over the collected log, its table into the result and
@@ -288,7 +289,10 @@ ReplayResult run_replay(const ReplayOptions& options) {
   if (collector) calibrate_log(*collector, config, options.calibration_out, result);
 
   result.imu_samples = runner.imu_samples();
-  if (!options.smooth) result.poses = runner.poses();
+  if (!options.smooth) {
+    result.poses = runner.poses();
+    result.navigating_poses = observer.navigating_poses();
+  }
   Summary& summary = result.summary;
   summary.extra["output"] = {{"rate_hz", rate_hz}, {"poses", result.poses}};
   if (outages) {
@@ -302,7 +306,7 @@ ReplayResult run_replay(const ReplayOptions& options) {
   }
   result.truncated_inputs = merger.truncated_inputs();
   result.failure = replay_failure(summary, result.imu_samples, runner.engine().modes_reached(),
-                                  {.asked = !outputs.empty(), .written = result.poses, .navigating = observer.navigating_poses()});
+                                  {.asked = !outputs.empty(), .written = result.poses, .navigating = result.navigating_poses});
   if (!result.failure.empty()) summary.extra["failure"] = result.failure;
   const auto& imu_rejected = summary.kind(MeasurementKind::kImu).rejected;
   if (const auto it = imu_rejected.find("time_backwards"); it != imu_rejected.end()) {

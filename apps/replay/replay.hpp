@@ -52,6 +52,7 @@ struct ReplayResult {
   Summary summary;
   std::uint64_t imu_samples = 0;  // IMU samples given to the filter
   std::uint64_t poses = 0;        // pose epochs written
+  std::uint64_t navigating_poses = 0;  // of those, in navigation, dead reckoning or smoothed
   std::vector<std::string> truncated_inputs;
   std::string accuracy_text;      // printable accuracy table (with --truth)
   std::string forward_accuracy_text;  // smooth: the forward filter's table beside it

@@ -35,7 +35,13 @@ SmoothedPassResult write_smoothed(filter::ForwardRecorder& record, const filter:
   result.stats = filter::smooth(record, [&](const filter::SmoothedSample& s) {
     epoch.solution = filter::smoothed_solution(s, options, time_source);
     epoch.pose_due = rate.due(s.x.time_ns);
-    if (epoch.pose_due) ++result.poses;
+    if (epoch.pose_due) {
+      ++result.poses;
+      const NavMode mode = epoch.solution.mode;
+      if (mode == NavMode::kSmoothed || mode == NavMode::kNavigation || mode == NavMode::kDeadReckoning) {
+        ++result.navigating_poses;
+      }
+    }
     if (writer) writer->post(epoch);
     if (accuracy != nullptr && epoch.pose_due) accuracy->add(epoch.solution);
     if (also) also(s);

@@ -21,6 +21,7 @@ namespace navfuse::apps {
 struct SmoothedPassResult {
   filter::SmootherStats stats;
   std::uint64_t poses = 0;
+  std::uint64_t navigating_poses = 0;  // of those, with a smoothed (or navigating) solution
   double wall_s = 0.0;
 };
 
