@@ -1,5 +1,6 @@
 #include "filter/solution.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/geodesy/geoid.hpp"
@@ -57,6 +58,22 @@ void fill_state_fields(const NavState& x, const Covariance& p, const Eigen::Vect
       (c_sv * p.block<3, 3>(sx::kGyroBias, sx::kGyroBias) * c_sv.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
   out.accel_bias_std_mps2 =
       (c_sv * p.block<3, 3>(sx::kAccelBias, sx::kAccelBias) * c_sv.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
+
+  const auto std_of = [&p](int index) { return std::sqrt(std::max(p(index, index), 0.0)); };
+  NavSolution::Calibration& cal = out.calibration;
+  cal.odometer_scale_error = {o.states.wheel_scale, x.wheel_scale, std_of(sx::kWheelScale)};
+  cal.mount_pitch_yaw_rad.estimated = o.states.mounting;
+  cal.mount_pitch_yaw_rad.value = {x.mount_pitch_rad, x.mount_yaw_rad};
+  cal.mount_pitch_yaw_rad.std = {std_of(sx::kMountPitch), std_of(sx::kMountYaw)};
+  const auto vector3 = [&](NavSolution::Calibration::Vector<3>& v, bool estimated,
+                           const Eigen::Vector3d& value, int index) {
+    v.estimated = estimated;
+    v.value = value;
+    v.std = {std_of(index), std_of(index + 1), std_of(index + 2)};
+  };
+  vector3(cal.gnss_lever_arm_m, o.states.gnss_lever_arm, x.gnss_lever_arm_m, sx::kLeverArm);
+  vector3(cal.gyro_scale, o.states.gyro_scale, x.gyro_scale, sx::kGyroScale);
+  vector3(cal.accel_scale, o.states.accel_scale, x.accel_scale, sx::kAccelScale);
 
   out.gravity_ned_mps2 = gravity_ned_mps2;
   out.angular_rate_rps = rate_b_rps;

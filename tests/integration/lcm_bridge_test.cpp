@@ -12,6 +12,7 @@
 #include "apps/lcm/lcm_channels.hpp"
 #include "apps/lcm/lcm_publisher.hpp"
 #include "apps/run/lcm_service.hpp"
+#include "apps/run/status_reporter.hpp"
 #include "core/rotation/rotation.hpp"
 #include "tests/integration/lcm_receiver.hpp"
 #include "tests/integration/test_paths.hpp"
@@ -135,6 +136,55 @@ TEST_F(LcmBridgeTest, PublisherMessagesArriveWithTheSolutionValues) {
   EXPECT_EQ(statuses.messages[0].inputs[0].name, "vn:serial:/dev/ttyUSB0");
   EXPECT_FLOAT_EQ(statuses.messages[0].latency_p99_us, 250.0f);
   EXPECT_EQ(publisher.failures(), 0u);
+}
+
+TEST_F(LcmBridgeTest, StatusCarriesPerKindInnovationStatistics) {
+  ASSERT_TRUE(tx_.good() && rx_.good()) << url_;
+  LcmReceiver<navfuse::status_t> statuses(rx_, apps::kStatusChannel);
+  // Filter statistics by hand: 8 GNSS positions tried (NIS 4, 4, 5, 5, 6, 6, 7, 30: sum 67, per
+  // dimension sum 67 / 3), 7 fused, 1 above the gate plus 2 late; 4 wheel speeds tried, all fused
+  // (NIS sum 2.0). GNSS velocity never tried: not listed.
+  filter::FilterStats stats;
+  auto& pos = stats.of(MeasurementKind::kGnssPosition);
+  pos.innovation = {.count = 8, .above_gate = 1, .nis_sum = 67.0, .nis_per_dim_sum = 67.0 / 3.0};
+  pos.used = 7;
+  pos.rejected[static_cast<std::size_t>(filter::RejectReason::kChi2Gate)] = 1;
+  pos.rejected[static_cast<std::size_t>(filter::RejectReason::kTooLate)] = 2;
+  auto& wheel = stats.of(MeasurementKind::kWheelSpeed);
+  wheel.innovation = {.count = 4, .above_gate = 0, .nis_sum = 2.0, .nis_per_dim_sum = 2.0};
+  wheel.used = 4;
+  stats.of(MeasurementKind::kGnssVelocity).rejected[static_cast<std::size_t>(filter::RejectReason::kNotAligned)] = 3;
+
+  const NavSolution solution = sample_solution();
+  const std::vector<apps::InputSnapshot> inputs;
+  apps::StatusReporter reporter;
+  apps::LcmPublisher publisher(tx_);
+  ASSERT_TRUE(publisher.publish_status(reporter.make({.solution = solution, .filter = stats, .inputs = inputs,
+                                                      .rejected_queue_full = 0, .rejected_time_base = 0,
+                                                      .output_drops = 0, .latency = {}},
+                                                     1'000'000'000)));
+  ASSERT_TRUE(handle_until(rx_, [&] { return !statuses.messages.empty(); }, kTimeoutMs));
+
+  const navfuse::status_t& s = statuses.messages[0];
+  ASSERT_EQ(s.num_innovations, 2);
+  const navfuse::innovation_t& p = s.innovations[0];
+  EXPECT_EQ(p.kind, "gnss_position");
+  EXPECT_EQ(p.count, 8);
+  EXPECT_EQ(p.accepted, 7);
+  EXPECT_EQ(p.rejected, 3);
+  EXPECT_FLOAT_EQ(p.mean_nis, 67.0f / 8.0f);
+  EXPECT_FLOAT_EQ(p.mean_nis_per_dim, 67.0f / 24.0f);
+  EXPECT_FLOAT_EQ(p.fraction_above_gate, 0.125f);
+  const navfuse::innovation_t& w = s.innovations[1];
+  EXPECT_EQ(w.kind, "wheel_speed");
+  EXPECT_EQ(w.count, 4);
+  EXPECT_EQ(w.accepted, 4);
+  EXPECT_EQ(w.rejected, 0);
+  EXPECT_FLOAT_EQ(w.mean_nis, 0.5f);
+  EXPECT_FLOAT_EQ(w.fraction_above_gate, 0.0f);
+  // The fields that were there before keep their meaning.
+  EXPECT_EQ(s.mode_name, "navigation");
+  EXPECT_EQ(s.num_rejections, 3);  // gnss_position chi2_gate and too_late, gnss_velocity not_aligned
 }
 
 TEST_F(LcmBridgeTest, AidingChannelsBecomeMeasurements) {
