@@ -214,21 +214,6 @@ TEST_F(RunLiveTest, SerialDeviceLcmAidingFeCommandsReplugAndSigterm) {
   ASSERT_EQ(status->num_inputs, 1);
   EXPECT_GE(status->inputs[0].reconnects, 1);
   EXPECT_GT(status->latency_p99_us, 0.0f);
-  // Per-kind innovation statistics: 30 s of the drive have fused GNSS positions; every update
-  // tried is either fused or gated, so no more are accepted than tried.
-  ASSERT_EQ(status->num_innovations, static_cast<std::int16_t>(status->innovations.size()));
-  const auto gnss = std::find_if(status->innovations.begin(), status->innovations.end(),
-                                 [](const navfuse::innovation_t& i) { return i.kind == "gnss_position"; });
-  ASSERT_NE(gnss, status->innovations.end()) << nav.output();
-  EXPECT_GT(gnss->count, 10);
-  EXPECT_GT(gnss->accepted, 0);
-  EXPECT_LE(gnss->accepted, gnss->count);
-  EXPECT_GT(gnss->mean_nis_per_dim, 0.0f);
-  // NIS per dimension is NIS over 1 to 3 rows.
-  EXPECT_GE(gnss->mean_nis, gnss->mean_nis_per_dim * 0.999f);
-  EXPECT_LE(gnss->mean_nis, gnss->mean_nis_per_dim * 3.001f);
-  EXPECT_GE(gnss->fraction_above_gate, 0.0f);
-  EXPECT_LE(gnss->fraction_above_gate, 1.0f);
   // NAVFUSE_IMU goes out with each NAVFUSE_POSE (output.rate_hz: 50 Hz), not at the 200 Hz IMU rate.
   const auto poses = listener.pose_times();
   const auto imus = listener.imu_times();
