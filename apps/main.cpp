@@ -1,5 +1,5 @@
 // navfuse: GNSS/INS fusion engine command line. Subcommands (DESIGN.md, contract): replay, run,
-// decode, bench, aid, sim. Each lives in apps/<name>/ and registers itself here.
+// decode, bench, aid, sim; plus config. Each lives in apps/<name>/ and registers itself here.
 #include <csignal>
 #include <iostream>
 
@@ -8,6 +8,7 @@
 #include "apps/aid/aid_command.hpp"
 #include "apps/bench/bench_command.hpp"
 #include "apps/common/command_error.hpp"
+#include "apps/configcmd/config_command.hpp"
 #include "apps/decode/decode_command.hpp"
 #include "apps/replay/calibration_hook.hpp"
 #include "apps/replay/replay_command.hpp"
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
   navfuse::apps::add_aid_command(app, exit_code);
   navfuse::apps::add_run_command(app, exit_code);
   navfuse::apps::add_sim_command(app, exit_code);
+  navfuse::apps::add_config_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -2,7 +2,7 @@
 # can drive the commands in-process. Each part lists its own sources in <part>/sources.cmake.
 add_library(navfuse_apps STATIC)
 target_link_libraries(navfuse_apps PUBLIC navfuse_frontends navfuse_core CLI11::CLI11 nlohmann_json::nlohmann_json)
-foreach(part common fusion decode replay run aid simcmd bench output lcm)
+foreach(part common fusion decode replay run aid simcmd bench output lcm configcmd)
   include(${CMAKE_CURRENT_SOURCE_DIR}/${part}/sources.cmake OPTIONAL)
 endforeach()
 

@@ -23,7 +23,7 @@ void initial_covariance(FilterCore& c, const FilterOptions& o, double tilt_std_r
   const double ba_var = n.initial_accel_bias_std_mps2 * n.initial_accel_bias_std_mps2;
   e.p.block<3, 3>(sx::kAccelBias, sx::kAccelBias).diagonal().setConstant(ba_var);
   // An unknown heading is not estimated (vertical-gyro mode): zero variance until it is set.
-  const double heading_std = o.initial_heading_rad ? 5.0 * rot::kDegToRad : 0.0;
+  const double heading_std = o.initial_heading_rad ? o.initial_heading_std_rad : 0.0;
   e.p(sx::kAttDown, sx::kAttDown) = heading_std * heading_std;
   if (stationary) {
     // Levelling makes C_nb f = (0, 0, -g): the horizontal velocity error rate

@@ -26,6 +26,17 @@ FilterOptions options_from_config(const navfuse::config::Config& config) {
   o.imu.accel_bias_corr_time_s = imu.accel_bias_corr_time_s;
   o.imu.initial_gyro_bias_std_rps = imu.initial_gyro_bias_std_deg_hr * kDegPerHourToRadPerSecond;
   o.imu.initial_accel_bias_std_mps2 = imu.initial_accel_bias_std_mps2;
+  // ppm to fraction by division: 1000 / 1e6 is the double nearest 1e-3, as the literal default is.
+  constexpr double kPpm = 1e6;
+  o.imu.initial_gyro_scale_std = imu.initial_gyro_scale_std_ppm / kPpm;
+  o.imu.initial_accel_scale_std = imu.initial_accel_scale_std_ppm / kPpm;
+  o.states.gyro_scale = imu.estimate_gyro_scale;
+  o.states.accel_scale = imu.estimate_accel_scale;
+  o.states.mounting = imu.estimate_mounting;
+  o.initial_mount_std_rad = imu.initial_mounting_std_deg * rot::kDegToRad;
+  o.states.gnss_lever_arm = config.gnss.estimate_lever_arm;
+  o.initial_lever_arm_std_m = config.gnss.initial_lever_arm_std_m;
+  o.max_imu_gap_s = imu.max_gap_s;
   o.mounting_rpy_rad = vec(imu.mounting_rpy_deg) * rot::kDegToRad;
   o.gnss_lever_arm_m = vec(config.gnss.lever_arm_m);
   o.gnss_secondary_lever_arm_m = vec(config.gnss.secondary_lever_arm_m);
@@ -45,6 +56,24 @@ FilterOptions options_from_config(const navfuse::config::Config& config) {
   scale(GnssFixType::kFix2D, g.std_scale_single);
   scale(GnssFixType::kFix3D, g.std_scale_single);
   o.gnss_velocity_std_scale = g.velocity_std_scale;
+  o.gnss_timeout_s = g.timeout_s;
+  o.gnss_recovery_s = g.recovery_s;
+  o.chi2_gate = {config.gates.chi2_1d, config.gates.chi2_2d, config.gates.chi2_3d};
+  o.max_latency_s = config.timing.max_latency_s;
+  const auto& nhc = config.nhc;
+  o.nhc_lateral_std_mps = nhc.lateral_std_mps;
+  o.nhc_vertical_std_mps = nhc.vertical_std_mps;
+  o.nhc_min_speed_mps = nhc.min_speed_mps;
+  o.nhc_interval_s = nhc.interval_s;
+  const auto& zupt = config.zupt;
+  o.zupt_std_mps = zupt.std_mps;
+  o.stationary_window_s = zupt.window_s;
+  o.stationary_gyro_rps = zupt.max_rate_rad_s;
+  o.stationary_accel_std_mps2 = zupt.max_accel_std_mps2;
+  o.stationary_max_speed_mps = zupt.max_speed_mps;
+  o.level_time_s = config.alignment.level_time_s;
+  o.level_timeout_s = config.alignment.level_timeout_s;
+  o.initial_heading_std_rad = config.alignment.initial_heading_std_deg * rot::kDegToRad;
   o.imu_time_offset_s = imu.time_offset_s;
   o.adaptation.window_s = config.adaptation.window_s;
   o.adaptation.inflate_ratio = config.adaptation.inflate_ratio;
@@ -56,14 +85,15 @@ FilterOptions options_from_config(const navfuse::config::Config& config) {
   // pedestrians). Only a wheeled vehicle cannot slip sideways; a boat or an aircraft is never
   // truly at rest, so only land and pedestrian platforms may assume zero velocity at stops.
   using navfuse::config::Platform;
-  o.land_vehicle = config.platform == Platform::kLand;
-  o.course_alignment = o.land_vehicle;
+  // An explicit nhc.enabled / alignment.course / zupt.enabled overrides the platform's choice.
+  const bool land = config.platform == Platform::kLand;
+  o.land_vehicle = nhc.enabled.value_or(land);
+  o.course_alignment = config.alignment.course.value_or(land);
   // A generic platform (the default) assumes nothing about how it moves: no NHC, no heading
   // from the course, but zero-velocity updates when the IMU is quiet (a vibrating boat or
   // aircraft is never detected as stationary anyway).
-  o.zero_velocity_updates = config.platform == Platform::kGeneric ||
-                            config.platform == Platform::kLand ||
-                            config.platform == Platform::kPedestrian;
+  o.zero_velocity_updates = zupt.enabled.value_or(config.platform == Platform::kGeneric || land ||
+                                                  config.platform == Platform::kPedestrian);
   // A walker rarely exceeds 1.5 m/s; at 0.5 m/s an RTK velocity (~0.02 m/s) still gives the
   // course to ~2 deg, and kinematic_max_course_std_rad refuses a noisier one.
   constexpr double kPedestrianAlignmentSpeed_mps = 0.5;

@@ -82,7 +82,7 @@ struct FilterOptions {
   double wheel_speed_std_mps = 0.05;  // used when a measurement reports 0
   double wheel_m_per_tick = 0.0;      // tick-to-metre scale of tick counters; 0: ticks not fused
   double initial_wheel_scale_std = 0.02;
-  bool land_vehicle = true;           // apply the non-holonomic constraint (platform: land)
+  bool land_vehicle = true;  // apply the non-holonomic constraint (nhc.enabled; default: platform land)
   // The point that does not slip sideways or leave the road (the rear-axle centre of a car);
   // nullopt: the wheel lever arm, which is where odometers usually measure.
   std::optional<Eigen::Vector3d> nhc_lever_arm_m;
@@ -107,6 +107,7 @@ struct FilterOptions {
   double level_time_s = 1.0;             // stationary time averaged for levelling
   double level_timeout_s = 10.0;         // level from whatever was seen if never stationary
   std::optional<double> initial_heading_rad;  // configured heading source
+  double initial_heading_std_rad = 5.0 * 3.14159265358979323846 / 180.0;  // its 1 sigma
   double kinematic_alignment_speed_mps = 2.0;
   // The course is taken as the heading only when its own noise, velocity std over speed, is
   // below this: a fast speed from a noisy velocity gives no better course than a slow one.
@@ -155,8 +156,8 @@ struct FilterOptions {
   double divergence_position_std_m = 1.0e4;
 };
 
-// Options from a loaded configuration: IMU noise keys, mounting, lever arms, wheel noise, the
-// platform's constraints and the alignment keys.
+// Options from a loaded configuration: every key of core/config (noise, geometry, estimated
+// states and priors, the platform's constraints and their overrides, gates, timeouts).
 FilterOptions options_from_config(const navfuse::config::Config& config);
 
 }  // namespace navfuse::filter

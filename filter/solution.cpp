@@ -1,5 +1,6 @@
 #include "filter/solution.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/geodesy/geoid.hpp"
@@ -29,7 +30,7 @@ Eigen::Matrix3d euler_from_phi(const Eigen::Vector3d& rpy) {
 
 void capture_state_fields(const NavState& x, const Covariance& p, const Eigen::Vector3d& rate_b_rps,
                           const Eigen::Vector3d& force_b_mps2, const Eigen::Vector3d& gravity_ned_mps2,
-                          const Eigen::Matrix3d& c_vs, StateFieldInputs& in) {
+                          const Eigen::Matrix3d& c_vs, const StateSelection& states, StateFieldInputs& in) {
   in.x = x;
   in.pos_cov = p.block<3, 3>(sx::kPos, sx::kPos);
   in.vel_cov = p.block<3, 3>(sx::kVel, sx::kVel);
@@ -40,6 +41,22 @@ void capture_state_fields(const NavState& x, const Covariance& p, const Eigen::V
   in.rate_b_rps = rate_b_rps;
   in.force_b_mps2 = force_b_mps2;
   in.gravity_ned_mps2 = gravity_ned_mps2;
+
+  const auto std_of = [&p](int index) { return std::sqrt(std::max(p(index, index), 0.0)); };
+  NavSolution::Calibration& cal = in.calibration;
+  cal.odometer_scale_error = {states.wheel_scale, x.wheel_scale, std_of(sx::kWheelScale)};
+  cal.mount_pitch_yaw_rad.estimated = states.mounting;
+  cal.mount_pitch_yaw_rad.value = {x.mount_pitch_rad, x.mount_yaw_rad};
+  cal.mount_pitch_yaw_rad.std = {std_of(sx::kMountPitch), std_of(sx::kMountYaw)};
+  const auto vector3 = [&](NavSolution::Calibration::Vector<3>& v, bool estimated, const Eigen::Vector3d& value,
+                           int index) {
+    v.estimated = estimated;
+    v.value = value;
+    v.std = {std_of(index), std_of(index + 1), std_of(index + 2)};
+  };
+  vector3(cal.gnss_lever_arm_m, states.gnss_lever_arm, x.gnss_lever_arm_m, sx::kLeverArm);
+  vector3(cal.gyro_scale, states.gyro_scale, x.gyro_scale, sx::kGyroScale);
+  vector3(cal.accel_scale, states.accel_scale, x.accel_scale, sx::kAccelScale);
 }
 
 void fill_state_fields(const StateFieldInputs& in, NavSolution& out) {
@@ -69,6 +86,8 @@ void fill_state_fields(const StateFieldInputs& in, NavSolution& out) {
   out.gyro_bias_std_rps = (c_sv * in.gyro_bias_cov * c_sv.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
   out.accel_bias_std_mps2 = (c_sv * in.accel_bias_cov * c_sv.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
 
+  out.calibration = in.calibration;
+
   out.gravity_ned_mps2 = in.gravity_ned_mps2;
   out.angular_rate_rps = in.rate_b_rps;
   out.linear_accel_mps2 = in.force_b_mps2 + c_nb.transpose() * in.gravity_ned_mps2;
@@ -97,7 +116,7 @@ void capture_solution(const FilterCore& c, const FilterOptions& o, const Eigen::
     in.gnss_fix = c.gnss.last_fix;
   }
 
-  capture_state_fields(x, c.ekf.p, c.rate_b_rps, c.force_b_mps2, c.earth.gravity_ned_mps2, c_vs, in.state);
+  capture_state_fields(x, c.ekf.p, c.rate_b_rps, c.force_b_mps2, c.earth.gravity_ned_mps2, c_vs, o.states, in.state);
 
   if (mode.levelled) {
     in.header.valid |= NavSolution::kValidAttitude | NavSolution::kValidAttitudeStd | NavSolution::kValidBiases;

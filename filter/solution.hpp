@@ -28,13 +28,16 @@ struct StateFieldInputs {
   Eigen::Matrix3d c_vs = Eigen::Matrix3d::Identity();
   Eigen::Vector3d rate_b_rps = Eigen::Vector3d::Zero(), force_b_mps2 = Eigen::Vector3d::Zero(),
                   gravity_ned_mps2 = Eigen::Vector3d::Zero();
+  // The calibration states (values and stds), taken whole at capture: a handful of entries.
+  NavSolution::Calibration calibration{};
 };
 
 // `c_vs` is the sensor-to-vehicle rotation of FilterOptions::mounting_rpy_rad (rot::dcm_from_rpy),
-// which the engine holds anyway (ImuInput::mounting).
+// which the engine holds anyway (ImuInput::mounting). `states`: which calibration states are
+// estimated (the others are reported as not estimated).
 void capture_state_fields(const NavState& x, const Covariance& p, const Eigen::Vector3d& rate_b_rps,
                           const Eigen::Vector3d& force_b_mps2, const Eigen::Vector3d& gravity_ned_mps2,
-                          const Eigen::Matrix3d& c_vs, StateFieldInputs& in);
+                          const Eigen::Matrix3d& c_vs, const StateSelection& states, StateFieldInputs& in);
 
 // The fields that follow from a state and its covariance: position (and undulation), velocity,
 // attitude, their stds, biases in the sensor frame with stds, gravity, compensated rate and

@@ -1,4 +1,5 @@
 target_sources(navfuse_apps PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/calibration_groups.cpp
   ${CMAKE_CURRENT_LIST_DIR}/command_help.cpp
   ${CMAKE_CURRENT_LIST_DIR}/frontend_registry.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gps_week_inference.cpp

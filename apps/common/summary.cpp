@@ -59,6 +59,17 @@ nlohmann::ordered_json Summary::to_json(bool decode_only) const {
                    {"max_process_noise_scale", adaptation->max_process_noise_scale},
                    {"gnss_recoveries", adaptation->gnss_recoveries}};
   }
+  if (!calibration.empty() && !decode_only) {
+    nlohmann::ordered_json c = nlohmann::ordered_json::object();
+    for (const CalibrationGroup& g : calibration) {
+      for (bool is_std : {false, true}) {
+        for (int i = 0; i < g.count; ++i) {
+          c[g.column(i, is_std)] = (is_std ? g.std : g.value)[static_cast<std::size_t>(i)];
+        }
+      }
+    }
+    j["calibration"] = c;
+  }
   for (const auto& [key, value] : extra.items()) j[key] = value;
   return j;
 }
@@ -92,7 +103,10 @@ void Summary::print(std::ostream& os, bool decode_only) const {
     }
     os << "\n";
   }
-  if (!decode_only) print_innovations(os);
+  if (!decode_only) {
+    print_innovations(os);
+    print_calibration(os);
+  }
   if (run) {
     os << "run: " << std::fixed << std::setprecision(3) << run->wall_s << " s wall, " << std::setprecision(0)
        << run->imu_samples_per_s << " IMU samples/s; modes reached:";
@@ -129,6 +143,20 @@ void Summary::print_innovations(std::ostream& os) const {
        << std::setprecision(2) << adaptation->process_noise_scale << " at the end (max "
        << adaptation->max_process_noise_scale << ")\n"
        << std::defaultfloat;
+  }
+}
+
+void Summary::print_calibration(std::ostream& os) const {
+  if (calibration.empty()) return;
+  os << "calibration at the end (value +- 1 sigma):\n";
+  for (const CalibrationGroup& g : calibration) {
+    os << "  " << std::left << std::setw(21) << g.name << std::setw(6) << g.unit << std::right << std::fixed
+       << std::setprecision(g.decimals);
+    for (int i = 0; i < g.count; ++i) {
+      const auto a = static_cast<std::size_t>(i);
+      os << (g.axes[a].empty() ? "" : " ") << g.axes[a] << ' ' << g.value[a] << " +- " << g.std[a];
+    }
+    os << "\n" << std::defaultfloat;
   }
 }
 

@@ -3,8 +3,9 @@
 // written as JSON with the DESIGN.md keys (contract): inputs[] {path, format, bytes, frames,
 // bad_frames, skipped_bytes}, measurements {kind: {decoded, used, rejected{reason: n}}},
 // run {wall_s, imu_samples_per_s, modes_reached}. Added beside them: measurements.KIND.innovation
-// {count, mean_nis, mean_nis_per_dim, fraction_above_gate}, measurements.KIND.pending_at_end and
-// filter {covariance_inflations, process_noise_scale, max_process_noise_scale, gnss_recoveries}.
+// {count, mean_nis, mean_nis_per_dim, fraction_above_gate}, measurements.KIND.pending_at_end,
+// filter {covariance_inflations, process_noise_scale, max_process_noise_scale, gnss_recoveries}
+// and calibration {the CSV's calibration column names: value} at the end of the run.
 #pragma once
 
 #include <array>
@@ -17,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/common/calibration_groups.hpp"
 #include "core/measurements/measurements.hpp"
 #include "frontends/common/stream_decoder.hpp"
 
@@ -63,6 +65,9 @@ struct Summary {
   std::array<KindSummary, static_cast<std::size_t>(MeasurementKind::kCount)> kinds{};
   std::optional<RunStats> run;  // absent for `decode`
   std::optional<AdaptationSummary> adaptation;  // absent for `decode`
+  // The estimated calibration states at the end of the run (the groups estimated; empty for
+  // `decode` and before levelling).
+  std::vector<CalibrationGroup> calibration;
   int interrupted_by = 0;       // the signal that stopped the run early (0: ran to the end)
   // Extra top-level sections (e.g. accuracy against truth) added by commands.
   nlohmann::ordered_json extra = nlohmann::ordered_json::object();
@@ -73,6 +78,7 @@ struct Summary {
 
  private:
   void print_innovations(std::ostream& os) const;
+  void print_calibration(std::ostream& os) const;
 };
 
 // Writes JSON to `path` as an OutputFile (apps/output/output_file.hpp: a regular file appears

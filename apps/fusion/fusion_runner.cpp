@@ -108,6 +108,10 @@ void FusionRunner::fill_summary(Summary& summary, double wall_s) const {
   run.imu_samples_per_s = wall_s > 0.0 ? static_cast<double>(imu_samples_) / wall_s : 0.0;
   for (NavMode mode : engine_.modes_reached()) run.modes_reached.emplace_back(to_string(mode));
   summary.run = run;
+  summary.calibration.clear();
+  for (const CalibrationGroup& g : calibration_groups(engine_.solution())) {
+    if (g.estimated) summary.calibration.push_back(g);
+  }
 }
 
 }  // namespace navfuse::apps

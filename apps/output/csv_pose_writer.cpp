@@ -2,16 +2,29 @@
 
 #include <cmath>
 
+#include "apps/common/calibration_groups.hpp"
 #include "apps/output/csv_fields.hpp"
 #include "core/rotation/rotation.hpp"
 
 namespace navfuse::apps {
 namespace {
 
-constexpr const char* kHeader =
+constexpr const char* kPoseHeader =
     "time_s,time_source,mode,lat_deg,lon_deg,height_m,vn_mps,ve_mps,vd_mps,roll_deg,pitch_deg,yaw_deg,"
     "pos_std_n_m,pos_std_e_m,pos_std_d_m,vel_std_n_mps,vel_std_e_mps,vel_std_d_mps,roll_std_deg,"
-    "pitch_std_deg,yaw_std_deg\n";
+    "pitch_std_deg,yaw_std_deg";
+
+// The pose columns, then the calibration columns (appended, so readers of the pose columns by
+// position keep working): per group its values, then its std devs.
+std::string header() {
+  std::string h = kPoseHeader;
+  for (const CalibrationGroup& g : calibration_groups(NavSolution{})) {
+    for (bool is_std : {false, true}) {
+      for (int i = 0; i < g.count; ++i) h += ',' + g.column(i, is_std);
+    }
+  }
+  return h + '\n';
+}
 
 using csv::append_fixed;
 using csv::append_time;
@@ -19,7 +32,7 @@ using csv::append_time;
 }  // namespace
 
 CsvPoseWriter::CsvPoseWriter(const std::string& path) : file_(path) {
-  file_.write(kHeader);
+  file_.write(header());
   row_.reserve(512);
 }
 
@@ -47,6 +60,13 @@ void CsvPoseWriter::write(const OutputEpoch& epoch) {
   for (int i = 0; i < 3; ++i) put(s.pos_std_ned_m[i], 4, NavSolution::kValidPositionStd);
   for (int i = 0; i < 3; ++i) put(s.vel_std_ned_mps[i], 5, NavSolution::kValidVelocityStd);
   for (int i = 0; i < 3; ++i) put(s.att_std_rpy_rad[i] * d, 6, NavSolution::kValidAttitudeStd);
+  for (const CalibrationGroup& g : calibration_groups(s)) {
+    for (const auto* column : {&g.value, &g.std}) {
+      for (int i = 0; i < g.count; ++i) {
+        append_fixed(row_, g.estimated ? (*column)[static_cast<std::size_t>(i)] : std::nan(""), g.decimals);
+      }
+    }
+  }
   row_ += '\n';
   file_.write(row_);
 }

@@ -7,6 +7,14 @@
 //   vn_mps, ve_mps, vd_mps              NED velocity
 //   roll_deg, pitch_deg, yaw_deg        vehicle FRD attitude, 3-2-1 Euler
 //   pos_std_{n,e,d}_m, vel_std_{n,e,d}_mps, {roll,pitch,yaw}_std_deg   1-sigma
+// then, appended (issue 14), the estimated calibration states and their 1-sigma std devs
+// (apps/common/calibration_groups.hpp), "nan" where not estimated or before levelling:
+//   gyro_bias_{x,y,z}_deg_h, gyro_bias_std_{x,y,z}_deg_h      sensor frame
+//   accel_bias_{x,y,z}_mps2, accel_bias_std_{x,y,z}_mps2      sensor frame
+//   odometer_scale_error, odometer_scale_error_std           measured = (1 + error) * true
+//   mount_{pitch,yaw}_deg, mount_std_{pitch,yaw}_deg         residual mounting
+//   gnss_lever_arm_{x,y,z}_m, gnss_lever_arm_std_{x,y,z}_m   vehicle frame, configured + estimated
+//   gyro_scale_{x,y,z}_ppm, ..._std_..., accel_scale_{x,y,z}_ppm, ..._std_...
 // Numbers use std::to_chars with fixed decimals: independent of the locale, so the same run
 // writes the same bytes anywhere.
 #pragma once

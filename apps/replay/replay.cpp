@@ -181,7 +181,7 @@ void smooth_record(filter::ForwardRecorder& record, const FusionRunner& runner, 
 void calibrate_log(const CalibrationCollector& collector, const config::Config& config, const std::string& path,
                    ReplayResult& result) {
   const calib::CalibrationResult r = calibration_solver()(collector.log());
-  result.summary.extra["calibration"] = calibration_json(r);
+  result.summary.extra["batch_calibration"] = calibration_json(r);  // beside the filter's own "calibration"
   result.calibration_text = calibration_table(r);
   if (r.epochs == 0 || r.iterations == 0) throw CommandError("calibration failed: " + r.message);
   OutputFile out(path);

@@ -44,6 +44,20 @@ navfuse::status_t StatusReporter::make(const StatusInputs& in, std::int64_t now_
       add_rejection(s, kind, std::string(filter::to_string(static_cast<filter::RejectReason>(r))), ks.rejected[r]);
     }
   }
+  for (std::size_t k = 0; k < in.filter.kinds.size(); ++k) {
+    const filter::KindStats& ks = in.filter.kinds[k];
+    if (ks.innovation.count == 0) continue;
+    navfuse::innovation_t i;
+    i.kind = std::string(to_string(static_cast<MeasurementKind>(k)));
+    i.count = static_cast<std::int64_t>(ks.innovation.count);
+    i.accepted = static_cast<std::int64_t>(ks.used);
+    i.rejected = static_cast<std::int64_t>(ks.rejected_total());
+    i.mean_nis = static_cast<float>(ks.innovation.mean_nis());
+    i.mean_nis_per_dim = static_cast<float>(ks.innovation.mean_nis_per_dim());
+    i.fraction_above_gate = static_cast<float>(ks.innovation.fraction_above_gate());
+    s.innovations.push_back(std::move(i));
+  }
+  s.num_innovations = static_cast<std::int16_t>(s.innovations.size());
   add_rejection(s, "all", "queue_full", in.rejected_queue_full);
   add_rejection(s, "all", "time_base", in.rejected_time_base);
   s.num_rejections = static_cast<std::int16_t>(s.rejections.size());

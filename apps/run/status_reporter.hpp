@@ -1,6 +1,7 @@
 // NAVFUSE_STATUS (about once a second): filter mode and health flags, per-input byte and frame
-// rates with bad frames and reconnects, rejections by measurement kind and reason, output drops,
-// and the IMU-arrival-to-pose-publication latency (p50/p99) over the last interval.
+// rates with bad frames and reconnects, rejections by measurement kind and reason, per-kind
+// innovation statistics (updates tried, accepted, rejected, mean NIS, fraction above the gate),
+// output drops, and the IMU-arrival-to-pose-publication latency (p50/p99) over the last interval.
 #pragma once
 
 #include <cstdint>

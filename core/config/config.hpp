@@ -42,6 +42,14 @@ struct ImuConfig {
   double initial_gyro_bias_std_deg_hr = 20;
   double initial_accel_bias_std_mps2 = 0.01;
   double time_offset_s = 0.0;  // added to IMU timestamps to put them on the GNSS time base
+  double max_gap_s = 1.0;      // a longer gap between samples restarts the filter
+  // Estimated calibration states and their priors (filter/state_layout.hpp).
+  bool estimate_gyro_scale = false;
+  double initial_gyro_scale_std_ppm = 1000;
+  bool estimate_accel_scale = false;
+  double initial_accel_scale_std_ppm = 1000;
+  bool estimate_mounting = false;  // residual mounting pitch and yaw
+  double initial_mounting_std_deg = 1.0;
 };
 
 struct GnssConfig {
@@ -56,6 +64,10 @@ struct GnssConfig {
   double std_scale_dgnss = 1.0;   // DGNSS and SBAS
   double std_scale_single = 1.0;  // 2-D and 3-D single point
   double velocity_std_scale = 1.0;
+  double timeout_s = 2.0;   // no position aiding for longer: dead reckoning
+  double recovery_s = 3.0;  // fixes rejected for longer: re-anchor to GNSS
+  bool estimate_lever_arm = false;  // primary antenna lever arm as a state
+  double initial_lever_arm_std_m = 0.1;
 };
 
 struct WheelConfig {
@@ -76,6 +88,44 @@ struct AlignmentConfig {
   // unset: 2 m/s, or 0.5 m/s on a pedestrian platform.
   std::optional<double> min_speed_mps;
   std::optional<double> initial_heading_deg;  // known heading at start (deg from north)
+  double initial_heading_std_deg = 5.0;       // its 1-sigma uncertainty
+  // Heading from the course over ground; unset: on a land platform only (it assumes motion
+  // along the vehicle's x axis).
+  std::optional<bool> course;
+  double level_time_s = 1.0;      // stationary time averaged for levelling
+  double level_timeout_s = 10.0;  // level from whatever was seen if never stationary that long
+};
+
+// Non-holonomic constraint (Groves 2nd ed. §13.1.3): no sideways or vertical velocity at the
+// wheel point. Unset `enabled`: on for a land platform only.
+struct NhcConfig {
+  std::optional<bool> enabled;
+  double lateral_std_mps = 0.1;
+  double vertical_std_mps = 0.1;
+  double min_speed_mps = 1.0;  // below it stops are left to zero-velocity updates
+  double interval_s = 0.1;
+};
+
+// Stationary detection and zero-velocity / zero-rate updates. Unset `enabled`: on for generic,
+// land and pedestrian platforms (stops are detected in any case).
+struct ZuptConfig {
+  std::optional<bool> enabled;
+  double std_mps = 0.02;
+  double window_s = 0.2;              // detector window
+  double max_rate_rad_s = 0.01;       // mean |rate| over the window below this ...
+  double max_accel_std_mps2 = 0.05;   // ... and specific-force scatter below this ...
+  double max_speed_mps = 0.3;         // ... and odometry / GNSS / filter speed below this
+};
+
+// Chi-square innovation gates by measurement dimension (the 99.99 % quantiles by default).
+struct GatesConfig {
+  double chi2_1d = 15.14;
+  double chi2_2d = 18.42;
+  double chi2_3d = 21.11;
+};
+
+struct TimingConfig {
+  double max_latency_s = 1.0;  // older measurements are rejected as too_late
 };
 
 // Innovation-based adaptation (filter/control/innovation_adaptation.hpp).
@@ -115,6 +165,10 @@ struct Config {
   GnssConfig gnss;
   WheelConfig wheel;
   AlignmentConfig alignment;
+  NhcConfig nhc;
+  ZuptConfig zupt;
+  GatesConfig gates;
+  TimingConfig timing;
   AdaptationConfig adaptation;
   MagnetometerConfig magnetometer;
   BaroConfig baro;
@@ -160,9 +214,10 @@ struct KeyBinding {
   std::string_view help;  // meaning and unit; printed as a comment by to_yaml()
   ValueRange range;
   // Where the value lives: a scalar, a fixed-length array of 3 (YAML flow sequence), an optional
-  // scalar (`~` = unset) or the platform name.
+  // scalar (`~` = unset), the platform name, or a switch (`true` / `false` only; optional: `~`
+  // leaves it to the platform).
   std::variant<double* (*)(Config&), Vec3* (*)(Config&), std::optional<double>* (*)(Config&),
-               Platform* (*)(Config&)>
+               Platform* (*)(Config&), bool* (*)(Config&), std::optional<bool>* (*)(Config&)>
       target;
 };
 

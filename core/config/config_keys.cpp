@@ -48,6 +48,25 @@ constexpr ValueRange kStdScale{0.0, 1000.0, true};
 // (no change) to 1e6 (std x 1000).
 constexpr ValueRange kAdaptationWindowS{0.1, 60.0};
 constexpr ValueRange kRatio{1.0, 1e6};
+// Scale-factor priors: 10 % (1e5 ppm) is beyond any inertial sensor worth calibrating.
+constexpr ValueRange kScalePpm{0.0, 1e5, true};
+// Angle priors: half a turn is "nothing known"; a larger std means the same.
+constexpr ValueRange kAngleStdDeg{0.0, 180.0, true};
+constexpr ValueRange kLeverArmStdM{0.0, 100.0, true};
+// Speeds and speed noise (NHC, ZUPT): at most 100 m/s, like the alignment threshold.
+constexpr ValueRange kSpeedThresholdMps{0.0, 100.0};
+// A sample gap, a latency, a detector window: above 0 and at most 10 s (the history kept for late
+// measurements grows with max_latency_s; a 10 s window never sees a stop).
+constexpr ValueRange kShortSpanS{0.0, 10.0, true};
+constexpr ValueRange kLatencyS{0.0, 10.0};  // 0: no re-propagation of late measurements
+// GNSS loss and levelling timeouts: above 0, at most 10 minutes.
+constexpr ValueRange kTimeoutS{0.0, 600.0, true};
+// Gyro threshold for "stationary": at most 10 rad/s (a spinning wheel).
+constexpr ValueRange kRateRadS{0.0, 10.0, true};
+constexpr ValueRange kAccelStdMps2{0.0, 100.0, true};
+// Chi-square gates: below 1 (the 68 % quantile for one dimension) the gate rejects healthy
+// measurements; 1e6 is in effect no gate.
+constexpr ValueRange kChi2{1.0, 1e6};
 
 // Magnetic heading noise: above 0, at most 180 deg (beyond it the heading says nothing).
 constexpr ValueRange kHeadingStdDeg{0.0, 180.0, true};
@@ -81,6 +100,14 @@ const KeyBinding kKeys[] = {
                        "turn-on accel bias uncertainty, 1 sigma (m/s^2)"),
     NAVFUSE_CONFIG_KEY(imu.time_offset_s, kTimeOffsetS,
                        "added to IMU timestamps to put them on GNSS time (s; -0.125: IMU stamps 125 ms late)"),
+    NAVFUSE_CONFIG_KEY(imu.max_gap_s, kShortSpanS, "a longer gap between IMU samples restarts the filter (s)"),
+    NAVFUSE_CONFIG_KEY(imu.estimate_gyro_scale, kAny, "estimate gyro scale factors (true | false)"),
+    NAVFUSE_CONFIG_KEY(imu.initial_gyro_scale_std_ppm, kScalePpm, "gyro scale factor prior, 1 sigma (ppm)"),
+    NAVFUSE_CONFIG_KEY(imu.estimate_accel_scale, kAny, "estimate accel scale factors (true | false)"),
+    NAVFUSE_CONFIG_KEY(imu.initial_accel_scale_std_ppm, kScalePpm, "accel scale factor prior, 1 sigma (ppm)"),
+    NAVFUSE_CONFIG_KEY(imu.estimate_mounting, kAny,
+                       "estimate residual mounting pitch and yaw, seen by odometry and NHC (true | false)"),
+    NAVFUSE_CONFIG_KEY(imu.initial_mounting_std_deg, kAngleStdDeg, "residual mounting prior, 1 sigma (deg)"),
     NAVFUSE_CONFIG_KEY(gnss.lever_arm_m, kLeverArmM, "primary antenna, vehicle frame FRD (m)"),
     NAVFUSE_CONFIG_KEY(gnss.secondary_lever_arm_m, kLeverArmM,
                        "secondary antenna: dual-antenna heading baseline, and where the fixes of "
@@ -93,6 +120,11 @@ const KeyBinding kKeys[] = {
     NAVFUSE_CONFIG_KEY(gnss.std_scale_dgnss, kStdScale, "multiplier on DGNSS/SBAS position std devs"),
     NAVFUSE_CONFIG_KEY(gnss.std_scale_single, kStdScale, "multiplier on single-point position std devs"),
     NAVFUSE_CONFIG_KEY(gnss.velocity_std_scale, kStdScale, "multiplier on GNSS velocity std devs"),
+    NAVFUSE_CONFIG_KEY(gnss.timeout_s, kTimeoutS, "no position aiding for longer: dead reckoning (s)"),
+    NAVFUSE_CONFIG_KEY(gnss.recovery_s, kTimeoutS,
+                       "every fix rejected for longer: re-anchor the position to GNSS (s)"),
+    NAVFUSE_CONFIG_KEY(gnss.estimate_lever_arm, kAny, "estimate the primary antenna lever arm (true | false)"),
+    NAVFUSE_CONFIG_KEY(gnss.initial_lever_arm_std_m, kLeverArmStdM, "lever arm prior per axis, 1 sigma (m)"),
     NAVFUSE_CONFIG_KEY(wheel.lever_arm_m, kLeverArmM,
                        "speed measurement point (e.g. rear axle centre), vehicle frame FRD (m)"),
     NAVFUSE_CONFIG_KEY(wheel.speed_std_mps, kPositive, "wheel speed noise, 1 sigma (m/s)"),
@@ -106,6 +138,34 @@ const KeyBinding kKeys[] = {
                        "GNSS speed for heading from course (m/s; ~: 2, pedestrian 0.5)"),
     NAVFUSE_CONFIG_KEY(alignment.initial_heading_deg, kAngleDeg,
                        "known heading at start (deg from north; ~: align by itself)"),
+    NAVFUSE_CONFIG_KEY(alignment.initial_heading_std_deg, kAngleStdDeg,
+                       "1 sigma of initial_heading_deg (deg)"),
+    NAVFUSE_CONFIG_KEY(alignment.course, kAny,
+                       "heading from the course over ground (true | false; ~: land platform only)"),
+    NAVFUSE_CONFIG_KEY(alignment.level_time_s, kShortSpanS, "stationary time averaged for levelling (s)"),
+    NAVFUSE_CONFIG_KEY(alignment.level_timeout_s, kTimeoutS,
+                       "level from whatever was seen when never stationary this long (s)"),
+    NAVFUSE_CONFIG_KEY(nhc.enabled, kAny,
+                       "non-holonomic constraint (true | false; ~: land platform only)"),
+    NAVFUSE_CONFIG_KEY(nhc.lateral_std_mps, kSpeedMps, "sideways velocity at the wheel point, 1 sigma (m/s)"),
+    NAVFUSE_CONFIG_KEY(nhc.vertical_std_mps, kSpeedMps, "vertical velocity at the wheel point, 1 sigma (m/s)"),
+    NAVFUSE_CONFIG_KEY(nhc.min_speed_mps, kSpeedThresholdMps, "applied only above this speed (m/s)"),
+    NAVFUSE_CONFIG_KEY(nhc.interval_s, kShortSpanS, "time between constraint updates (s)"),
+    NAVFUSE_CONFIG_KEY(zupt.enabled, kAny,
+                       "zero-velocity and zero-rate updates at stops (true | false; ~: generic, land, "
+                       "pedestrian platforms)"),
+    NAVFUSE_CONFIG_KEY(zupt.std_mps, kSpeedMps, "zero-velocity update noise, 1 sigma (m/s)"),
+    NAVFUSE_CONFIG_KEY(zupt.window_s, kShortSpanS, "stationary detector window (s)"),
+    NAVFUSE_CONFIG_KEY(zupt.max_rate_rad_s, kRateRadS, "stationary: mean |angular rate| below this (rad/s)"),
+    NAVFUSE_CONFIG_KEY(zupt.max_accel_std_mps2, kAccelStdMps2,
+                       "stationary: specific-force scatter below this (m/s^2)"),
+    NAVFUSE_CONFIG_KEY(zupt.max_speed_mps, kSpeedMps,
+                       "stationary: odometry, GNSS and filter speed below this (m/s)"),
+    NAVFUSE_CONFIG_KEY(gates.chi2_1d, kChi2, "chi-square gate of 1-D updates (speed, heading, ...)"),
+    NAVFUSE_CONFIG_KEY(gates.chi2_2d, kChi2, "chi-square gate of 2-D updates (NHC, ...)"),
+    NAVFUSE_CONFIG_KEY(gates.chi2_3d, kChi2, "chi-square gate of 3-D updates (GNSS position, velocity, ZUPT)"),
+    NAVFUSE_CONFIG_KEY(timing.max_latency_s, kLatencyS,
+                       "older measurements are rejected as too_late (s; 0: no re-propagation)"),
     NAVFUSE_CONFIG_KEY(adaptation.window_s, kAdaptationWindowS,
                        "innovations within this span decide that the filter is overconfident (s)"),
     NAVFUSE_CONFIG_KEY(adaptation.inflate_ratio, kRatio,

@@ -190,6 +190,19 @@ class Loader {
       }
       return;
     }
+    if (auto flag = std::get_if<bool* (*)(Config&)>(&binding.target)) {
+      *(*flag)(config) = boolean(node, binding.key);
+      return;
+    }
+    if (auto optional = std::get_if<std::optional<bool>* (*)(Config&)>(&binding.target)) {
+      std::optional<bool>& out = *(*optional)(config);
+      if (node.IsNull()) {
+        out.reset();  // `~`: the platform decides
+      } else {
+        out = boolean(node, binding.key);
+      }
+      return;
+    }
     if (auto platform = std::get_if<Platform* (*)(Config&)>(&binding.target)) {
       const auto p = node.IsScalar() ? platform_from_string(node.Scalar()) : std::nullopt;
       if (!p) {
@@ -207,6 +220,16 @@ class Loader {
       out[i] = number(node[i], std::string(binding.key) + "[" + std::to_string(i) + "]",
                       binding.range);
     }
+  }
+
+  // Only `true` and `false`: YAML 1.1's yes/no/on/off (and `1`, a quoted "true") are more often a
+  // slip than a wish, and yaml-cpp would read some of them as switches.
+  bool boolean(const YAML::Node& node, std::string_view key) {
+    if (node.IsScalar() && node.Tag() != "!") {
+      if (node.Scalar() == "true") return true;
+      if (node.Scalar() == "false") return false;
+    }
+    fail(node, key, "expected true or false, got " + describe(node));
   }
 
   double number(const YAML::Node& node, const std::string& key, const ValueRange& range) {

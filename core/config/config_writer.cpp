@@ -50,6 +50,11 @@ std::string to_yaml(const Config& config) {
     } else if (auto optional = std::get_if<std::optional<double>* (*)(Config&)>(&binding.target)) {
       const std::optional<double>& v = *(*optional)(copy);
       out += v ? format_number(*v) : std::string("~");
+    } else if (auto flag = std::get_if<bool* (*)(Config&)>(&binding.target)) {
+      out += *(*flag)(copy) ? "true" : "false";
+    } else if (auto optional_flag = std::get_if<std::optional<bool>* (*)(Config&)>(&binding.target)) {
+      const std::optional<bool>& v = *(*optional_flag)(copy);
+      out += v ? (*v ? "true" : "false") : "~";
     } else if (auto platform = std::get_if<Platform* (*)(Config&)>(&binding.target)) {
       out += to_string(*(*platform)(copy));
     } else {

@@ -226,6 +226,27 @@ struct NavSolution {
   Eigen::Vector3d accel_bias_mps2 = Eigen::Vector3d::Zero();
   Eigen::Vector3d gyro_bias_std_rps = Eigen::Vector3d::Zero();
   Eigen::Vector3d accel_bias_std_mps2 = Eigen::Vector3d::Zero();
+  // The other estimated calibration states (filter solutions, valid with kValidBiases), each with
+  // its 1-sigma std. A state the filter does not estimate has `estimated` false, its configured
+  // value and std 0.
+  struct Calibration {
+    struct Scalar {
+      bool estimated = false;
+      double value = 0.0, std = 0.0;
+    };
+    template <int N>
+    struct Vector {
+      bool estimated = false;
+      Eigen::Matrix<double, N, 1> value = Eigen::Matrix<double, N, 1>::Zero();
+      Eigen::Matrix<double, N, 1> std = Eigen::Matrix<double, N, 1>::Zero();
+    };
+    Scalar odometer_scale_error;  // measured speed = (1 + error) * true speed
+    Vector<2> mount_pitch_yaw_rad;  // residual IMU-to-vehicle pitch and yaw
+    Vector<3> gnss_lever_arm_m;     // primary antenna, vehicle frame: configured + estimated
+    Vector<3> gyro_scale;           // measured = (1 + scale) * true, vehicle frame
+    Vector<3> accel_scale;
+  };
+  Calibration calibration;
   Eigen::Vector3d angular_rate_rps = Eigen::Vector3d::Zero();   // bias-compensated, vehicle frame
   Eigen::Vector3d linear_accel_mps2 = Eigen::Vector3d::Zero();  // gravity removed, vehicle frame
   Eigen::Vector3d gravity_ned_mps2 = Eigen::Vector3d::Zero();

@@ -27,7 +27,8 @@ void note_antenna_yaw(FilterCore& c, std::int64_t time_ns, double vehicle_yaw_ra
 
 bool check_baseline(FilterCore& c, const FilterOptions& o, const GnssVelocity& m, double course_std_rad) {
   BaselineCheckState& b = c.gnss.baseline;
-  if (b.offset_detected || !o.land_vehicle) return false;
+  // Course and yaw agree only where the course is a heading (course_alignment: a land vehicle).
+  if (b.offset_detected || !o.course_alignment) return false;
   const double speed = m.vel_ned_mps.head<2>().norm();
   const bool reversing = c.odometry.last_speed_mps < 0.0 &&
                          seconds_since(m.header.time_ns, c.odometry.last_speed_ns) < kMaxYawAge_s;

@@ -203,7 +203,7 @@ NavSolution smoothed_solution(const SmoothedSample& s, const FilterOptions& o, T
   out.gnss_fix = f.gnss_fix;
   StateFieldInputs state;
   capture_state_fields(s.x, s.p, f.rate_b_rps, f.force_b_mps2, f.gravity_ned_mps2, rot::dcm_from_rpy(o.mounting_rpy_rad),
-                       state);
+                       o.states, state);
   fill_state_fields(state, out);
   out.header.valid |= f.valid;
   out.status_flags = f.status_flags;

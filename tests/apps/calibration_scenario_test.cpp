@@ -54,7 +54,7 @@ TEST(CalibrationScenario, SmoothRecoversTheSimulatedInstallation) {
   ASSERT_TRUE(result.failure.empty()) << result.failure;
   std::printf("%s", result.calibration_text.c_str());
   ASSERT_NE(result.calibration_text.find("gnss.lever_arm_m x"), std::string::npos);
-  const nlohmann::ordered_json& c = result.summary.extra.at("calibration");
+  const nlohmann::ordered_json& c = result.summary.extra.at("batch_calibration");
   EXPECT_TRUE(c.at("converged").get<bool>());
   EXPECT_TRUE(c.at("covariance_ok").get<bool>());
 

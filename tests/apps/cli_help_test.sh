@@ -14,7 +14,7 @@ ln -s "$SRC/data" "$TMP/data"
 (cd "$TMP" && "$BIN" run --config data/demo/vn300.yaml data/demo/vn300.vnb --record rec --quiet 2> /dev/null) \
   || fail "navfuse run --record"
 
-for cmd in decode replay run bench aid sim; do
+for cmd in decode replay run bench aid sim config; do
   help=$("$BIN" "$cmd" --help)
   echo "$help" | grep -q -- "-q,--quiet" || fail "$cmd --help: no -q,--quiet"
   # The examples are the end of the help: "Examples:", then pairs of "# what" / "navfuse CMD ...".

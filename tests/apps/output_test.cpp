@@ -3,9 +3,11 @@
 // (against the DESIGN.md --fe-out / --mip-out contract).
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
+#include "apps/common/summary.hpp"
 #include "apps/output/compensated_imu.hpp"
 #include "apps/output/csv_pose_writer.hpp"
 #include "apps/output/encoded_file_writer.hpp"
@@ -79,12 +81,62 @@ TEST(CsvPoseWriter, RowHasExactTimeAndFixedDecimals) {
   }
   const std::string text = read_text(dir / "p.csv");
   const std::string rows = text.substr(text.find('\n') + 1);
+  // Not levelled (no kValidBiases): the 36 calibration columns appended at the end are nan.
+  std::string no_calibration;
+  for (int i = 0; i < 36; ++i) no_calibration += ",nan";
   EXPECT_EQ(rows,
             "1234567890.000000005,gps,navigation,45.0000000000,-120.5000000000,100.2500,1.00000,-2.00000,"
             "0.50000,1.000000,-2.000000,90.000000,0.5000,0.5000,1.0000,0.01000,0.02000,0.03000,0.100000,"
-            "0.100000,0.500000\n"
+            "0.100000,0.500000" + no_calibration + "\n"
             "1234567890.000000005,gps,vertical_gyro,nan,nan,nan,nan,nan,nan,1.000000,-2.000000,nan,nan,nan,nan,"
-            "nan,nan,nan,0.100000,0.100000,0.500000\n");
+            "nan,nan,nan,0.100000,0.100000,0.500000" + no_calibration + "\n");
+}
+
+TEST(CsvPoseWriter, CalibrationColumnsAppendedAfterThePoseColumns) {
+  const auto dir = scratch_dir();
+  NavSolution s;
+  s.header.valid = NavSolution::kValidBiases;
+  // 1e-5 rad/s = 1e-5 * 180 / pi * 3600 deg/h = 2.0626 deg/h; 2e-5 rad/s std = 4.1253 deg/h.
+  s.gyro_bias_rps = {1e-5, -1e-5, 0.0};
+  s.gyro_bias_std_rps = {2e-5, 2e-5, 2e-5};
+  s.accel_bias_mps2 = {0.01, 0.0, -0.02};
+  s.accel_bias_std_mps2 = {0.001, 0.001, 0.002};
+  s.calibration.odometer_scale_error = {.estimated = true, .value = 0.0125, .std = 0.002};
+  s.calibration.gnss_lever_arm_m.estimated = true;
+  s.calibration.gnss_lever_arm_m.value = {0.8, -0.4, -1.3};
+  s.calibration.gnss_lever_arm_m.std = {0.05, 0.05, 0.1};
+  s.calibration.gyro_scale.value = {1e-3, 0, 0};  // not estimated: nan
+  {
+    CsvPoseWriter w((dir / "c.csv").string());
+    w.write(OutputEpoch{.solution = s, .pose_due = true});
+    w.commit();
+  }
+  const std::string text = read_text(dir / "c.csv");
+  const std::string header = text.substr(0, text.find('\n'));
+  const std::string pose_header =
+      "time_s,time_source,mode,lat_deg,lon_deg,height_m,vn_mps,ve_mps,vd_mps,roll_deg,pitch_deg,yaw_deg,"
+      "pos_std_n_m,pos_std_e_m,pos_std_d_m,vel_std_n_mps,vel_std_e_mps,vel_std_d_mps,roll_std_deg,"
+      "pitch_std_deg,yaw_std_deg,";
+  ASSERT_EQ(header.substr(0, pose_header.size()), pose_header);  // the old columns keep their place
+  EXPECT_EQ(header.substr(pose_header.size()),
+            "gyro_bias_x_deg_h,gyro_bias_y_deg_h,gyro_bias_z_deg_h,gyro_bias_std_x_deg_h,gyro_bias_std_y_deg_h,"
+            "gyro_bias_std_z_deg_h,accel_bias_x_mps2,accel_bias_y_mps2,accel_bias_z_mps2,accel_bias_std_x_mps2,"
+            "accel_bias_std_y_mps2,accel_bias_std_z_mps2,odometer_scale_error,odometer_scale_error_std,"
+            "mount_pitch_deg,mount_yaw_deg,mount_std_pitch_deg,mount_std_yaw_deg,gnss_lever_arm_x_m,"
+            "gnss_lever_arm_y_m,gnss_lever_arm_z_m,gnss_lever_arm_std_x_m,gnss_lever_arm_std_y_m,"
+            "gnss_lever_arm_std_z_m,gyro_scale_x_ppm,gyro_scale_y_ppm,gyro_scale_z_ppm,gyro_scale_std_x_ppm,"
+            "gyro_scale_std_y_ppm,gyro_scale_std_z_ppm,accel_scale_x_ppm,accel_scale_y_ppm,accel_scale_z_ppm,"
+            "accel_scale_std_x_ppm,accel_scale_std_y_ppm,accel_scale_std_z_ppm");
+  const std::string row = text.substr(text.find('\n') + 1);
+  std::string tail = row;
+  for (int i = 0; i < 21; ++i) tail = tail.substr(tail.find(',') + 1);  // skip the pose columns
+  EXPECT_EQ(tail,
+            "2.0626,-2.0626,0.0000,4.1253,4.1253,4.1253,"
+            "0.010000,0.000000,-0.020000,0.001000,0.001000,0.002000,"
+            "0.012500,0.002000,"
+            "nan,nan,nan,nan,"
+            "0.8000,-0.4000,-1.3000,0.0500,0.0500,0.1000,"
+            "nan,nan,nan,nan,nan,nan,nan,nan,nan,nan,nan,nan\n");
 }
 
 TEST(CompensatedImu, SpecificForceIsAccelerationMinusGravityInBody) {
@@ -218,6 +270,34 @@ TEST(EncodedFileWriter, FileHoldsExactlyTheEncoderBytes) {
   }
   const std::string text = read_text(dir / "out.p1log");
   EXPECT_EQ(std::vector<std::uint8_t>(text.begin(), text.end()), expected);
+}
+
+}  // namespace
+}  // namespace navfuse::apps
+
+namespace navfuse::apps {
+namespace {
+
+TEST(SummaryCalibration, JsonUsesTheCsvNamesAndTextListsEstimatedGroups) {
+  NavSolution s;
+  s.header.valid = NavSolution::kValidBiases;
+  s.gyro_bias_rps = {1e-5, 0.0, 0.0};
+  s.calibration.odometer_scale_error = {.estimated = true, .value = -0.03, .std = 0.004};
+  Summary summary;
+  for (const CalibrationGroup& g : calibration_groups(s)) {
+    if (g.estimated) summary.calibration.push_back(g);
+  }
+  ASSERT_EQ(summary.calibration.size(), 3u);  // gyro bias, accel bias, odometer scale
+  const auto j = summary.to_json(false);
+  EXPECT_NEAR(j["calibration"]["gyro_bias_x_deg_h"].get<double>(), 1e-5 * 180.0 / rot::kPi * 3600.0, 1e-12);
+  EXPECT_EQ(j["calibration"]["odometer_scale_error"].get<double>(), -0.03);
+  EXPECT_EQ(j["calibration"]["odometer_scale_error_std"].get<double>(), 0.004);
+  EXPECT_FALSE(j["calibration"].contains("mount_pitch_deg"));
+  EXPECT_FALSE(summary.to_json(true).contains("calibration"));
+  std::ostringstream text;
+  summary.print(text, false);
+  EXPECT_NE(text.str().find("calibration at the end (value +- 1 sigma):\n"), std::string::npos) << text.str();
+  EXPECT_NE(text.str().find("odometer_scale_error        -0.030000 +- 0.004000\n"), std::string::npos) << text.str();
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "apps/lcm/lcm_channels.hpp"
 #include "apps/lcm/lcm_publisher.hpp"
 #include "apps/run/lcm_service.hpp"
+#include "apps/run/status_reporter.hpp"
 #include "core/rotation/rotation.hpp"
 #include "tests/integration/lcm_receiver.hpp"
 #include "tests/integration/test_paths.hpp"
@@ -135,6 +136,53 @@ TEST_F(LcmBridgeTest, PublisherMessagesArriveWithTheSolutionValues) {
   EXPECT_EQ(statuses.messages[0].inputs[0].name, "vn:serial:/dev/ttyUSB0");
   EXPECT_FLOAT_EQ(statuses.messages[0].latency_p99_us, 250.0f);
   EXPECT_EQ(publisher.failures(), 0u);
+}
+
+TEST_F(LcmBridgeTest, StatusCarriesPerKindInnovationStatistics) {
+  ASSERT_TRUE(tx_.good() && rx_.good()) << url_;
+  LcmReceiver<navfuse::status_t> statuses(rx_, apps::kStatusChannel);
+  // Filter statistics by hand: 8 GNSS positions tried (NIS 4, 4, 5, 5, 6, 6, 7, 30: sum 67, per
+  // dimension sum 67 / 3), 7 fused, 1 above the gate plus 2 late; 4 wheel speeds tried, all fused
+  // (NIS sum 2.0). GNSS velocity never tried: not listed.
+  filter::FilterStats stats;
+  auto& pos = stats.of(MeasurementKind::kGnssPosition);
+  pos.innovation = {.count = 8, .above_gate = 1, .nis_sum = 67.0, .nis_per_dim_sum = 67.0 / 3.0};
+  pos.used = 7;
+  pos.rejected[static_cast<std::size_t>(filter::RejectReason::kChi2Gate)] = 1;
+  pos.rejected[static_cast<std::size_t>(filter::RejectReason::kTooLate)] = 2;
+  auto& wheel = stats.of(MeasurementKind::kWheelSpeed);
+  wheel.innovation = {.count = 4, .above_gate = 0, .nis_sum = 2.0, .nis_per_dim_sum = 2.0};
+  wheel.used = 4;
+  stats.of(MeasurementKind::kGnssVelocity).rejected[static_cast<std::size_t>(filter::RejectReason::kNotAligned)] = 3;
+
+  const NavSolution solution = sample_solution();
+  const std::vector<apps::InputSnapshot> inputs;
+  apps::StatusReporter reporter;
+  apps::LcmPublisher publisher(tx_);
+  ASSERT_TRUE(publisher.publish_status(reporter.make({.solution = solution, .filter = stats, .inputs = inputs,
+                                                      .rejected_queue_full = 0, .rejected_time_base = 0,
+                                                      .output_drops = 0, .latency = {}},
+                                                     1'000'000'000)));
+  ASSERT_TRUE(handle_until(rx_, [&] { return !statuses.messages.empty(); }, kTimeoutMs));
+
+  const navfuse::status_t& s = statuses.messages[0];
+  ASSERT_EQ(s.num_innovations, 2);
+  // kind, count, accepted, rejected, mean NIS, per dimension, fraction above the gate
+  const navfuse::innovation_t want[] = {{"gnss_position", 8, 7, 3, 67.0f / 8.0f, 67.0f / 24.0f, 0.125f},
+                                        {"wheel_speed", 4, 4, 0, 0.5f, 0.5f, 0.0f}};
+  for (std::size_t k = 0; k < 2; ++k) {
+    const navfuse::innovation_t& got = s.innovations[k];
+    EXPECT_EQ(got.kind, want[k].kind);
+    EXPECT_EQ(got.count, want[k].count);
+    EXPECT_EQ(got.accepted, want[k].accepted);
+    EXPECT_EQ(got.rejected, want[k].rejected);
+    EXPECT_FLOAT_EQ(got.mean_nis, want[k].mean_nis);
+    EXPECT_FLOAT_EQ(got.mean_nis_per_dim, want[k].mean_nis_per_dim);
+    EXPECT_FLOAT_EQ(got.fraction_above_gate, want[k].fraction_above_gate);
+  }
+  // The fields that were there before keep their meaning.
+  EXPECT_EQ(s.mode_name, "navigation");
+  EXPECT_EQ(s.num_rejections, 3);  // gnss_position chi2_gate and too_late, gnss_velocity not_aligned
 }
 
 TEST_F(LcmBridgeTest, AidingChannelsBecomeMeasurements) {
