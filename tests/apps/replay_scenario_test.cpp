@@ -10,6 +10,7 @@
 #include "apps/replay/replay.hpp"
 #include "apps/simcmd/sim_command.hpp"
 #include "decode_counts.hpp"
+#include "simulated_drive.hpp"
 #include "test_files.hpp"
 
 namespace navfuse::apps {
@@ -24,12 +25,7 @@ class ReplayScenario : public ::testing::Test {
   // separate processes in parallel, so nothing may be shared between them.
   void SetUp() override {
     dir_ = testing::scratch_dir();
-    SimOptions o;
-    o.scenario = "drive_short";  // 30 s GNSS outage at 20 m/s, 95-125 s
-    o.format = "vn";
-    o.out_path = (dir_ / "vn.bin").string();
-    o.wheel_out_path = (dir_ / "wheel.p1log").string();
-    o.truth_path = (dir_ / "truth.csv").string();
+    SimOptions o = testing::short_drive_sim(dir_, "wheel.p1log");
     o.device_rate_hz = 50.0;
     run_sim(o);
   }

@@ -10,6 +10,7 @@
 
 #include "apps/replay/replay.hpp"
 #include "apps/simcmd/sim_command.hpp"
+#include "simulated_drive.hpp"
 #include "test_files.hpp"
 
 namespace navfuse::apps {
@@ -19,12 +20,7 @@ class ReplayTicks : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = testing::scratch_dir();
-    SimOptions o;
-    o.scenario = "drive_short";  // 30 s GNSS outage at 20 m/s, 95-125 s
-    o.format = "vn";
-    o.out_path = (dir_ / "vn.bin").string();
-    o.wheel_out_path = (dir_ / "ticks.p1log").string();
-    o.truth_path = (dir_ / "truth.csv").string();
+    SimOptions o = testing::short_drive_sim(dir_, "ticks.p1log");
     o.wheel_tick_m = 0.02;
     run_sim(o);
   }
