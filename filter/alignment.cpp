@@ -148,11 +148,7 @@ void place_at_fix(FilterCore& c, const FilterOptions& o, const GnssPosition& fix
   c.x.lat_rad = ref.lat_rad;
   c.x.lon_rad = ref.lon_rad;
   if ((fix.header.valid & GnssPosition::kValidHeight) != 0) c.x.height_m = ref.height_m;
-  Eigen::Matrix3d cov = (fix.header.valid & GnssPosition::kValidCovariance) != 0
-                            ? fix.cov_ned_m2
-                            : Eigen::Matrix3d(default_gnss_position_std_m(fix.fix).array().square().matrix().asDiagonal());
-  const double std_scale = o.gnss_position_std_scale_for(fix.fix);
-  cov *= std_scale * std_scale;
+  Eigen::Matrix3d cov = gnss_position_cov_m2(fix, o.gnss_position_std_scale_for(fix.fix));
   if (!c.mode.heading_known) {
     const double lever_h_sq = lever_b.head<2>().squaredNorm();
     cov(0, 0) += lever_h_sq;

@@ -13,6 +13,13 @@ Eigen::Vector3d default_gnss_position_std_m(GnssFixType fix) {
   }
 }
 
+Eigen::Matrix3d gnss_position_cov_m2(const GnssPosition& m, double std_scale) {
+  const Eigen::Matrix3d cov = (m.header.valid & GnssPosition::kValidCovariance) != 0
+                                  ? m.cov_ned_m2
+                                  : Eigen::Matrix3d(default_gnss_position_std_m(m.fix).array().square().matrix().asDiagonal());
+  return std_scale == 1.0 ? cov : Eigen::Matrix3d(cov * (std_scale * std_scale));
+}
+
 Antenna antenna_of_receiver(const NavState& x, const Eigen::Vector3d& secondary_lever_arm_m,
                             std::uint8_t receiver_id) {
   if (receiver_id == 1 && !secondary_lever_arm_m.isZero()) return {secondary_lever_arm_m, false};
@@ -29,11 +36,7 @@ Observation gnss_position_observation(const StateView& s, const GnssPosition& m,
       point_minus_llh_ned_m(s, gnss_position_prediction(s, antenna), m.lat_rad, m.lon_rad, m.height_m);
   point_jacobian(s, antenna.lever_arm_m, obs);
   if (antenna.lever_arm_is_state) obs.h.block<3, 3>(0, sx::kLeverArm) = s.c_nb;
-  if ((m.header.valid & GnssPosition::kValidCovariance) != 0) {
-    obs.r = m.cov_ned_m2;
-  } else {
-    obs.r = default_gnss_position_std_m(m.fix).array().square().matrix().asDiagonal();
-  }
+  obs.r = gnss_position_cov_m2(m);
   if ((m.header.valid & GnssPosition::kValidHeight) == 0) obs.keep_rows(0b011);
   return obs;
 }

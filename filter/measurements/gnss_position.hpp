@@ -8,6 +8,10 @@ namespace navfuse::filter {
 
 // 1-sigma position noise assumed when a fix reports no covariance (typical receiver figures).
 Eigen::Vector3d default_gnss_position_std_m(GnssFixType fix);
+// The fix's NED covariance: the receiver's own when it reports one, else the default for its fix
+// type; times std_scale^2 (gnss.std_scale_* of the configuration). One choice for the update and
+// for placing the filter at a fix.
+Eigen::Matrix3d gnss_position_cov_m2(const GnssPosition& m, double std_scale = 1.0);
 
 // The antenna a receiver's fixes are measured at. Receiver 1 (MIP 0x92 "GNSS 2", VN-300 GNSS2:
 // the second antenna of a dual-antenna set-up) is at the configured secondary antenna, a fixed
