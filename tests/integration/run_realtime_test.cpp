@@ -2,7 +2,7 @@
 // log (190 s, two files): paced by their own timestamps, the files reach the filter as a device
 // would deliver them, so the run uses what `replay` (which merges them by time) uses: no
 // measurement rejected as overflow or too late, the same counts. Read unpaced, the speed file
-// runs minutes ahead of the IMU and most of it overflows the filter's history (issue 17).
+// runs minutes ahead of (or behind) the IMU and most of it is lost (issue 17).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -59,8 +59,12 @@ TEST_F(RunRealtimeTest, PacedFileInputsAreUsedAsReplayUsesThem) {
     // at the end of alignment; everything else is used exactly as replay uses it.
     EXPECT_NEAR(p["used"].get<double>(), r["used"].get<double>(), 2.0) << p.dump() << "\n" << r.dump();
   }
-  // Without pacing, the problem the option exists for.
-  EXPECT_GT(rejected_as(unpaced["measurements"]["vehicle_speed"], "overflow"), 1000u) << unpaced.dump();
+  // Without pacing, the problem the option exists for: the two readers are not merged by time, so
+  // whichever thread the scheduler favours runs ahead. The speed file ahead of the IMU overflows
+  // the filter's history; the IMU ahead of the speed file leaves the speeds too late (a loaded
+  // CI machine gave 9,450 too_late and no overflow). Either way most speeds are lost.
+  const auto& speed = unpaced["measurements"]["vehicle_speed"];
+  EXPECT_GT(rejected_as(speed, "overflow") + rejected_as(speed, "too_late"), 1000u) << unpaced.dump();
 }
 
 TEST_F(RunRealtimeTest, RefusesASpeedThatIsNotPositive) {
