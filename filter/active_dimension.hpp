@@ -12,8 +12,9 @@
 
 namespace navfuse::filter {
 
-inline constexpr std::array<int, 6> kActiveDimensions{
-    sx::kCoreCount, sx::kWheelScale + 1, sx::kMountYaw + 1, sx::kLeverArm + 3, sx::kGyroScale + 3, sx::kCount};
+inline constexpr std::array<int, 7> kActiveDimensions{sx::kCoreCount,     sx::kWheelScale + 1, sx::kMountYaw + 1,
+                                                     sx::kLeverArm + 3,  sx::kGyroScale + 3,  sx::kAccelScale + 3,
+                                                     sx::kCount};
 static_assert(kActiveDimensions.back() == sx::kCount, "the largest block holds every state");
 
 namespace detail {

@@ -49,6 +49,7 @@ void initial_covariance(FilterCore& c, const FilterOptions& o, double tilt_std_r
   e.p(sx::kMountPitch, sx::kMountPitch) = e.p(sx::kMountYaw, sx::kMountYaw) = mount_var;
   e.p.block<3, 3>(sx::kLeverArm, sx::kLeverArm).diagonal().setConstant(
       o.initial_lever_arm_std_m * o.initial_lever_arm_std_m);
+  e.p(sx::kGnssTimeOffset, sx::kGnssTimeOffset) = o.initial_gnss_time_offset_std_s * o.initial_gnss_time_offset_std_s;
   e.p.block<3, 3>(sx::kGyroScale, sx::kGyroScale).diagonal().setConstant(
       n.initial_gyro_scale_std * n.initial_gyro_scale_std);
   e.p.block<3, 3>(sx::kAccelScale, sx::kAccelScale).diagonal().setConstant(

@@ -28,6 +28,7 @@ StateVector variance_floor_for(const FilterOptions& o) {
   f.segment<3>(sx::kLeverArm).setConstant(1e-10);
   f.segment<3>(sx::kGyroScale).setConstant(1e-14);
   f.segment<3>(sx::kAccelScale).setConstant(1e-14);
+  f(sx::kGnssTimeOffset) = 1e-12;  // s^2: a microsecond
   for (int i = 0; i < sx::kCount; ++i) {
     if (!o.states.is_active(i)) f(i) = 0.0;
   }

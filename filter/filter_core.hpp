@@ -171,7 +171,11 @@ struct FilterCore {
   void flush_covariance(const FilterOptions& o);
   // Gate, update, correct the nominal state. `gate` <= 0: no gate.
   FuseResult apply(const FilterOptions& o, const Observation& obs, double gate);
-  StateView view(double shift_s) const { return StateView(x, earth, rate_b_rps, shift_s); }
+  StateView view(double shift_s) const {
+    StateView v(x, earth, rate_b_rps, shift_s);
+    v.accel_ned_mps2 = v.c_nb * force_b_mps2 + earth.gravity_ned_mps2;
+    return v;
+  }
   double gate_for(const FilterOptions& o, int rows) const {
     return rows >= 1 && rows <= 3 ? o.chi2_gate[static_cast<std::size_t>(rows - 1)] : 0.0;
   }

@@ -36,6 +36,8 @@ FilterOptions options_from_config(const navfuse::config::Config& config) {
   o.initial_mount_std_rad = imu.initial_mounting_std_deg * rot::kDegToRad;
   o.states.gnss_lever_arm = config.gnss.estimate_lever_arm;
   o.initial_lever_arm_std_m = config.gnss.initial_lever_arm_std_m;
+  o.states.gnss_time_offset = config.gnss.estimate_time_offset;
+  o.initial_gnss_time_offset_std_s = config.gnss.initial_time_offset_std_s;
   o.max_imu_gap_s = imu.max_gap_s;
   o.mounting_rpy_rad = vec(imu.mounting_rpy_deg) * rot::kDegToRad;
   o.gnss_lever_arm_m = vec(config.gnss.lever_arm_m);

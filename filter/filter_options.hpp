@@ -92,6 +92,7 @@ struct FilterOptions {
   double nhc_min_speed_mps = 1.0;     // below this ZUPT/odometry take over
   double initial_mount_std_rad = 1.0 * 3.14159265358979323846 / 180.0;
   double initial_lever_arm_std_m = 0.1;
+  double initial_gnss_time_offset_std_s = 0.05;  // used only with StateSelection::gnss_time_offset
 
   // Stationary detection and zero-velocity / zero-angular-rate updates.
   double stationary_window_s = 0.2;

@@ -21,6 +21,7 @@ void inject_error(NavState& x, const StateVector& dx) {
   x.mount_pitch_rad -= dx(sx::kMountPitch);
   x.mount_yaw_rad -= dx(sx::kMountYaw);
   x.gnss_lever_arm_m -= dx.segment<3>(sx::kLeverArm);
+  x.gnss_time_offset_s -= dx(sx::kGnssTimeOffset);
   x.gyro_scale -= dx.segment<3>(sx::kGyroScale);
   x.accel_scale -= dx.segment<3>(sx::kAccelScale);
 }
@@ -41,6 +42,7 @@ StateVector state_difference(const NavState& a, const NavState& b) {
   dx(sx::kMountPitch) = a.mount_pitch_rad - b.mount_pitch_rad;
   dx(sx::kMountYaw) = a.mount_yaw_rad - b.mount_yaw_rad;
   dx.segment<3>(sx::kLeverArm) = a.gnss_lever_arm_m - b.gnss_lever_arm_m;
+  dx(sx::kGnssTimeOffset) = a.gnss_time_offset_s - b.gnss_time_offset_s;
   dx.segment<3>(sx::kGyroScale) = a.gyro_scale - b.gyro_scale;
   dx.segment<3>(sx::kAccelScale) = a.accel_scale - b.accel_scale;
   return dx;

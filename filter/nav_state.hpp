@@ -28,6 +28,8 @@ struct NavState {
   double mount_pitch_rad = 0.0;
   double mount_yaw_rad = 0.0;
   Eigen::Vector3d gnss_lever_arm_m = Eigen::Vector3d::Zero();
+  // A fix stamped t (GNSS time after gnss.time_offset_s) is the antenna at IMU time t + this.
+  double gnss_time_offset_s = 0.0;
 };
 
 // Applies an error-state estimate (estimate minus truth) to the nominal state: x <- x - dx.

@@ -34,6 +34,9 @@ StateVector process_noise_density(const FilterOptions& o) {
   const double mount_rw = 0.01 * rot::kDegToRad / 60.0;
   q(sx::kMountPitch) = mount_rw * mount_rw;
   q(sx::kMountYaw) = mount_rw * mount_rw;
+  // A receiver's latency moves with its load by milliseconds: 1 ms / sqrt(h).
+  const double time_offset_rw = 1e-3 / 60.0;
+  q(sx::kGnssTimeOffset) = time_offset_rw * time_offset_rw;
   for (int i = 0; i < sx::kCount; ++i) {
     if (!o.states.is_active(i)) q(i) = 0.0;
   }

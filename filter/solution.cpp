@@ -57,6 +57,7 @@ void capture_state_fields(const NavState& x, const Covariance& p, const Eigen::V
   vector3(cal.gnss_lever_arm_m, states.gnss_lever_arm, x.gnss_lever_arm_m, sx::kLeverArm);
   vector3(cal.gyro_scale, states.gyro_scale, x.gyro_scale, sx::kGyroScale);
   vector3(cal.accel_scale, states.accel_scale, x.accel_scale, sx::kAccelScale);
+  cal.gnss_time_offset_s = {states.gnss_time_offset, x.gnss_time_offset_s, std_of(sx::kGnssTimeOffset)};
 }
 
 void fill_state_fields(const StateFieldInputs& in, NavSolution& out) {

@@ -27,7 +27,11 @@ inline constexpr int kMountYaw = 17;    // residual IMU-to-vehicle yaw, rad (1)
 inline constexpr int kLeverArm = 18;    // primary GNSS antenna lever arm error, vehicle frame, m (3)
 inline constexpr int kGyroScale = 21;   // gyro scale factor errors, dimensionless (3)
 inline constexpr int kAccelScale = 24;  // accelerometer scale factor errors, dimensionless (3)
-inline constexpr int kCount = 27;       // the largest state set
+// Residual GNSS time offset, s (1): what is still to be added to the GNSS timestamps (after
+// gnss.time_offset_s) to put the fixes on the IMU's time. Last, so that it costs nothing unless
+// switched on.
+inline constexpr int kGnssTimeOffset = 27;
+inline constexpr int kCount = 28;       // the largest state set
 // Position, velocity and attitude are the only states with dynamics: every row of the system
 // matrix F below this index may be non-zero, every row from it on is zero (biases and
 // calibration states are random walks / constants). The covariance step exploits it.
@@ -47,6 +51,7 @@ struct StateSelection {
   bool gnss_lever_arm = false;  // primary antenna lever arm
   bool gyro_scale = false;
   bool accel_scale = false;
+  bool gnss_time_offset = false;  // residual GNSS-to-IMU time offset
 
   bool is_active(int index) const {
     if (index < sx::kCoreCount) return true;
@@ -54,10 +59,12 @@ struct StateSelection {
     if (index == sx::kMountPitch || index == sx::kMountYaw) return mounting;
     if (index < sx::kLeverArm + 3) return gnss_lever_arm;
     if (index < sx::kGyroScale + 3) return gyro_scale;
-    return accel_scale;
+    if (index < sx::kAccelScale + 3) return accel_scale;
+    return gnss_time_offset;
   }
   // One past the highest active index: the block the EKF computes on.
   int active_dimension() const {
+    if (gnss_time_offset) return sx::kGnssTimeOffset + 1;
     if (accel_scale) return sx::kAccelScale + 3;
     if (gyro_scale) return sx::kGyroScale + 3;
     if (gnss_lever_arm) return sx::kLeverArm + 3;

@@ -55,6 +55,8 @@ std::array<CalibrationGroup, kCalibrationGroups> calibration_groups(const NavSol
                c.gyro_scale.std, kPpm),
       group<3>("accel_scale", "ppm", kXyz, 1, valid && c.accel_scale.estimated, c.accel_scale.value,
                c.accel_scale.std, kPpm),
+      group<1>("gnss_time_offset", "ms", {""}, 2, valid && c.gnss_time_offset_s.estimated,
+               V1(c.gnss_time_offset_s.value), V1(c.gnss_time_offset_s.std), 1e3),
   };
 }
 

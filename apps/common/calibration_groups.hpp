@@ -1,5 +1,6 @@
 // The estimated calibration states as the outputs print them: one group per quantity (gyro and
-// accel biases, odometer scale error, residual mounting, GNSS lever arm, scale factors), each
+// accel biases, odometer scale error, residual mounting, GNSS lever arm, scale factors, GNSS time
+// offset), each
 // with its unit, axes, value and 1-sigma std, converted from the solution's SI once here. The CSV
 // columns (apps/output/csv_pose_writer.cpp) and the run summary's `calibration` section are both
 // printed from these groups.
@@ -28,7 +29,7 @@ struct CalibrationGroup {
   std::string column(int axis, bool is_std) const;
 };
 
-inline constexpr std::size_t kCalibrationGroups = 7;
+inline constexpr std::size_t kCalibrationGroups = 8;
 // Biases in the sensor frame (as NavSolution reports them), the rest in the vehicle frame.
 std::array<CalibrationGroup, kCalibrationGroups> calibration_groups(const NavSolution& s);
 

@@ -15,6 +15,7 @@
 //   mount_{pitch,yaw}_deg, mount_std_{pitch,yaw}_deg         residual mounting
 //   gnss_lever_arm_{x,y,z}_m, gnss_lever_arm_std_{x,y,z}_m   vehicle frame, configured + estimated
 //   gyro_scale_{x,y,z}_ppm, ..._std_..., accel_scale_{x,y,z}_ppm, ..._std_...
+//   gnss_time_offset_ms, gnss_time_offset_std_ms            residual, added to GNSS times
 // Numbers use std::to_chars with fixed decimals: independent of the locale, so the same run
 // writes the same bytes anywhere.
 #pragma once

@@ -68,6 +68,10 @@ struct GnssConfig {
   double recovery_s = 3.0;  // fixes rejected for longer: re-anchor to GNSS
   bool estimate_lever_arm = false;  // primary antenna lever arm as a state
   double initial_lever_arm_std_m = 0.1;
+  // The GNSS-to-IMU time offset left after time_offset_s, as a state (a rig whose latency is not
+  // known, or drifts with the receiver's load).
+  bool estimate_time_offset = false;
+  double initial_time_offset_std_s = 0.05;
 };
 
 struct WheelConfig {

@@ -41,6 +41,10 @@ constexpr ValueRange kScaleStd{0.0, 0.5};
 // Time offsets between inputs: a few hundred ms of latency is common (USB, filtering, RTK
 // processing); beyond 10 s the two clocks are not the same time base at all.
 constexpr ValueRange kTimeOffsetS{-10.0, 10.0};
+// The prior of an estimated offset: the state is linearised as a shift of the fix along the
+// velocity (v dt, exact to 1/2 a dt^2), which holds to a centimetre for dt up to ~0.1 s at 2 m/s^2;
+// an offset known to be larger belongs in gnss.time_offset_s.
+constexpr ValueRange kTimeOffsetStdS{0.0, 1.0, true};
 // Std-dev multipliers: above 0 (0 would claim a perfect measurement), at most 1000 (beyond it the
 // measurement carries no information: leave it out instead).
 constexpr ValueRange kStdScale{0.0, 1000.0, true};
@@ -125,6 +129,9 @@ const KeyBinding kKeys[] = {
                        "every fix rejected for longer: re-anchor the position to GNSS (s)"),
     NAVFUSE_CONFIG_KEY(gnss.estimate_lever_arm, kAny, "estimate the primary antenna lever arm (true | false)"),
     NAVFUSE_CONFIG_KEY(gnss.initial_lever_arm_std_m, kLeverArmStdM, "lever arm prior per axis, 1 sigma (m)"),
+    NAVFUSE_CONFIG_KEY(gnss.estimate_time_offset, kAny,
+                       "estimate the GNSS-to-IMU time offset left after time_offset_s (true | false)"),
+    NAVFUSE_CONFIG_KEY(gnss.initial_time_offset_std_s, kTimeOffsetStdS, "time offset prior, 1 sigma (s)"),
     NAVFUSE_CONFIG_KEY(wheel.lever_arm_m, kLeverArmM,
                        "speed measurement point (e.g. rear axle centre), vehicle frame FRD (m)"),
     NAVFUSE_CONFIG_KEY(wheel.speed_std_mps, kPositive, "wheel speed noise, 1 sigma (m/s)"),

@@ -245,6 +245,7 @@ struct NavSolution {
     Vector<3> gnss_lever_arm_m;     // primary antenna, vehicle frame: configured + estimated
     Vector<3> gyro_scale;           // measured = (1 + scale) * true, vehicle frame
     Vector<3> accel_scale;
+    Scalar gnss_time_offset_s;  // residual: to add to GNSS times (after the configured offset)
   };
   Calibration calibration;
   Eigen::Vector3d angular_rate_rps = Eigen::Vector3d::Zero();   // bias-compensated, vehicle frame

@@ -1,5 +1,7 @@
 #include "filter/measurements/gnss_position.hpp"
 
+#include "filter/measurements/gnss_velocity.hpp"
+
 namespace navfuse::filter {
 
 Eigen::Vector3d default_gnss_position_std_m(GnssFixType fix) {
@@ -27,7 +29,11 @@ Antenna antenna_of_receiver(const NavState& x, const Eigen::Vector3d& secondary_
 }
 
 PointPrediction gnss_position_prediction(const StateView& s, const Antenna& antenna) {
-  return point_at(s, antenna.lever_arm_m);
+  PointPrediction p = point_at(s, antenna.lever_arm_m);
+  // The fix is the antenna at t + dt: constant antenna velocity over dt (the error, a dt^2 / 2,
+  // is the reason the prior of dt is bounded: config key gnss.initial_time_offset_std_s).
+  if (s.x.gnss_time_offset_s != 0.0) p.offset_ned_m += antenna_velocity_ned_mps(s, antenna.lever_arm_m) * s.x.gnss_time_offset_s;
+  return p;
 }
 
 Observation gnss_position_observation(const StateView& s, const GnssPosition& m, const Antenna& antenna) {
@@ -36,6 +42,12 @@ Observation gnss_position_observation(const StateView& s, const GnssPosition& m,
       point_minus_llh_ned_m(s, gnss_position_prediction(s, antenna), m.lat_rad, m.lon_rad, m.height_m);
   point_jacobian(s, antenna.lever_arm_m, obs);
   if (antenna.lever_arm_is_state) obs.h.block<3, 3>(0, sx::kLeverArm) = s.c_nb;
+  // d(v_ant dt): v_ant in the offset's column, dt times the antenna velocity's rows elsewhere.
+  const double dt = s.x.gnss_time_offset_s;
+  const Observation v_ant =
+      antenna_velocity_observation(s, antenna.lever_arm_m, Eigen::Vector3d::Zero(), antenna.lever_arm_is_state);
+  if (dt != 0.0) obs.h += dt * v_ant.h;
+  obs.h.col(sx::kGnssTimeOffset) = v_ant.residual;
   obs.r = gnss_position_cov_m2(m);
   if ((m.header.valid & GnssPosition::kValidHeight) == 0) obs.keep_rows(0b011);
   return obs;

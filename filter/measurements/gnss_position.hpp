@@ -1,4 +1,7 @@
-// GNSS antenna position: p_ant = p + C_nb l (Groves 2nd ed. §14.3.1, lever-arm position model).
+// GNSS antenna position: p_ant = p + C_nb l (Groves 2nd ed. §14.3.1, lever-arm position model),
+// moved along the antenna velocity by the estimated GNSS time offset (Groves §14.3.2's
+// time-synchronisation error, modelled as a state as in Li et al. 2017, "Online temporal
+// calibration for camera-IMU", for a shift small against the dynamics).
 #pragma once
 
 #include "core/measurements/measurements.hpp"
@@ -24,7 +27,8 @@ struct Antenna {
 Antenna antenna_of_receiver(const NavState& x, const Eigen::Vector3d& secondary_lever_arm_m,
                             std::uint8_t receiver_id);
 
-// h(x): the antenna position.
+// h(x): the antenna position at the fix's time on the IMU clock, t + dt (dt: the time offset state),
+// p + C_nb l + v_ant (shift + dt).
 PointPrediction gnss_position_prediction(const StateView& s, const Antenna& antenna);
 // Rows north, east (and down when the height is valid).
 Observation gnss_position_observation(const StateView& s, const GnssPosition& m, const Antenna& antenna);

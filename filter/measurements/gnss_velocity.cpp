@@ -22,6 +22,9 @@ Observation antenna_velocity_observation(const StateView& s, const Eigen::Vector
 
 Observation gnss_velocity_observation(const StateView& s, const GnssVelocity& m, const Antenna& antenna) {
   Observation obs = antenna_velocity_observation(s, antenna.lever_arm_m, m.vel_ned_mps, antenna.lever_arm_is_state);
+  // The fix is the antenna velocity at t + dt: v_ant + a dt, the acceleration an input of the view.
+  obs.residual += s.accel_ned_mps2 * s.x.gnss_time_offset_s;
+  obs.h.col(sx::kGnssTimeOffset) = s.accel_ned_mps2;
   if ((m.header.valid & GnssVelocity::kValidCovariance) != 0) {
     obs.r = m.cov_ned_m2ps2;
   } else {

@@ -21,6 +21,10 @@ struct StateView {
   Eigen::Matrix3d c_nb;
   Eigen::Vector3d rate_b_rps;  // compensated angular rate w_ib, vehicle frame
   double shift_s = 0.0;        // measurement time minus state time (|shift| < one IMU interval)
+  // Kinematic acceleration dv_n/dt of the newest sample (C_nb f + g; Coriolis and transport rate,
+  // < 2e-3 m/s^2 at 30 m/s, left out): an input like the rate, for models that shift a velocity in
+  // time. Zero unless the caller sets it.
+  Eigen::Vector3d accel_ned_mps2 = Eigen::Vector3d::Zero();
 
   StateView(const NavState& state, const LocalEarth& local, const Eigen::Vector3d& rate, double shift)
       : x(state), earth(local), c_nb(state.q_nb.toRotationMatrix()), rate_b_rps(rate), shift_s(shift) {}

@@ -45,6 +45,7 @@ class Out {
     put(x.mount_pitch_rad);
     put(x.mount_yaw_rad);
     put(x.gnss_lever_arm_m);
+    put(x.gnss_time_offset_s);
   }
   // Upper triangle of the leading n x n block.
   void put_symmetric(const Covariance& p, int n) {
@@ -93,6 +94,7 @@ class In {
     x.mount_pitch_rad = get<double>();
     x.mount_yaw_rad = get<double>();
     x.gnss_lever_arm_m = vec();
+    x.gnss_time_offset_s = get<double>();
     return x;
   }
   void symmetric(Covariance& p, int n) {
@@ -115,7 +117,7 @@ bool same_state(const NavState& a, const NavState& b) {
          a.gyro_bias_rps == b.gyro_bias_rps && a.accel_bias_mps2 == b.accel_bias_mps2 &&
          a.gyro_scale == b.gyro_scale && a.accel_scale == b.accel_scale && a.wheel_scale == b.wheel_scale &&
          a.mount_pitch_rad == b.mount_pitch_rad && a.mount_yaw_rad == b.mount_yaw_rad &&
-         a.gnss_lever_arm_m == b.gnss_lever_arm_m;
+         a.gnss_lever_arm_m == b.gnss_lever_arm_m && a.gnss_time_offset_s == b.gnss_time_offset_s;
 }
 
 // Payload scratch shared by the hooks (the filter is single-threaded per recorder).

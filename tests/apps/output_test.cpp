@@ -81,9 +81,9 @@ TEST(CsvPoseWriter, RowHasExactTimeAndFixedDecimals) {
   }
   const std::string text = read_text(dir / "p.csv");
   const std::string rows = text.substr(text.find('\n') + 1);
-  // Not levelled (no kValidBiases): the 36 calibration columns appended at the end are nan.
+  // Not levelled (no kValidBiases): the 38 calibration columns appended at the end are nan.
   std::string no_calibration;
-  for (int i = 0; i < 36; ++i) no_calibration += ",nan";
+  for (int i = 0; i < 38; ++i) no_calibration += ",nan";
   EXPECT_EQ(rows,
             "1234567890.000000005,gps,navigation,45.0000000000,-120.5000000000,100.2500,1.00000,-2.00000,"
             "0.50000,1.000000,-2.000000,90.000000,0.5000,0.5000,1.0000,0.01000,0.02000,0.03000,0.100000,"
@@ -106,6 +106,8 @@ TEST(CsvPoseWriter, CalibrationColumnsAppendedAfterThePoseColumns) {
   s.calibration.gnss_lever_arm_m.value = {0.8, -0.4, -1.3};
   s.calibration.gnss_lever_arm_m.std = {0.05, 0.05, 0.1};
   s.calibration.gyro_scale.value = {1e-3, 0, 0};  // not estimated: nan
+  // -0.0125 s = -12.50 ms, 0.4 ms std: printed in ms with two decimals.
+  s.calibration.gnss_time_offset_s = {.estimated = true, .value = -0.0125, .std = 0.0004};
   {
     CsvPoseWriter w((dir / "c.csv").string());
     w.write(OutputEpoch{.solution = s, .pose_due = true});
@@ -126,7 +128,8 @@ TEST(CsvPoseWriter, CalibrationColumnsAppendedAfterThePoseColumns) {
             "gnss_lever_arm_y_m,gnss_lever_arm_z_m,gnss_lever_arm_std_x_m,gnss_lever_arm_std_y_m,"
             "gnss_lever_arm_std_z_m,gyro_scale_x_ppm,gyro_scale_y_ppm,gyro_scale_z_ppm,gyro_scale_std_x_ppm,"
             "gyro_scale_std_y_ppm,gyro_scale_std_z_ppm,accel_scale_x_ppm,accel_scale_y_ppm,accel_scale_z_ppm,"
-            "accel_scale_std_x_ppm,accel_scale_std_y_ppm,accel_scale_std_z_ppm");
+            "accel_scale_std_x_ppm,accel_scale_std_y_ppm,accel_scale_std_z_ppm,gnss_time_offset_ms,"
+            "gnss_time_offset_std_ms");
   const std::string row = text.substr(text.find('\n') + 1);
   std::string tail = row;
   for (int i = 0; i < 21; ++i) tail = tail.substr(tail.find(',') + 1);  // skip the pose columns
@@ -136,7 +139,8 @@ TEST(CsvPoseWriter, CalibrationColumnsAppendedAfterThePoseColumns) {
             "0.012500,0.002000,"
             "nan,nan,nan,nan,"
             "0.8000,-0.4000,-1.3000,0.0500,0.0500,0.1000,"
-            "nan,nan,nan,nan,nan,nan,nan,nan,nan,nan,nan,nan\n");
+            "nan,nan,nan,nan,nan,nan,nan,nan,nan,nan,nan,nan,"
+            "-12.50,0.40\n");
 }
 
 TEST(CompensatedImu, SpecificForceIsAccelerationMinusGravityInBody) {

@@ -4,7 +4,7 @@
 // H: the residual h(x_hat) - z of each model is evaluated on nominal states moved along each
 // error-state axis with inject_error (x_hat = x + eps e_j is inject_error(x, -eps e_j), since
 // inject_error subtracts an estimate-minus-truth error), and (r(+eps) - r(-eps)) / (2 eps) is
-// compared with column j of H, for all 27 states switched on and at states with non-zero
+// compared with column j of H, for all 28 states switched on and at states with non-zero
 // attitude, lever arms, rates, latitude and calibration states.
 //
 // F: one strapdown step from a perturbed and from the unperturbed state, differenced with
@@ -50,12 +50,14 @@ struct TestPoint {
   Eigen::Vector3d raw_rate_rps;
   Eigen::Vector3d raw_force_mps2;
   double shift_s;
+  Eigen::Vector3d accel_ned_mps2;  // the view's acceleration input (GNSS time-offset models)
 };
 
 std::vector<TestPoint> test_points() {
   std::vector<TestPoint> points;
   const auto make = [](std::string name, double lat_deg, double height_m, const Eigen::Vector3d& vel,
-                       const Eigen::Vector3d& rpy_deg, const Eigen::Vector3d& rate, double shift_s) {
+                       const Eigen::Vector3d& rpy_deg, const Eigen::Vector3d& rate, double shift_s,
+                       double gnss_time_offset_s) {
     TestPoint p;
     p.name = std::move(name);
     p.x.lat_rad = lat_deg * rot::kDegToRad;
@@ -72,17 +74,19 @@ std::vector<TestPoint> test_points() {
     p.x.mount_pitch_rad = 0.01;
     p.x.mount_yaw_rad = -0.02;
     p.x.gnss_lever_arm_m = {0.8, -0.4, -1.3};
+    p.x.gnss_time_offset_s = gnss_time_offset_s;
+    p.accel_ned_mps2 = Eigen::Vector3d(1.2, -0.7, 0.3);
     p.raw_rate_rps = rate;
     p.raw_force_mps2 = Eigen::Vector3d(0.8, -0.3, -9.7);
     p.shift_s = shift_s;
     return p;
   };
   points.push_back(make("turning_mid_latitude", 48.0, 350.0, {14.0, -6.0, 0.3}, {4.0, -3.0, 35.0},
-                        {0.02, -0.03, 0.35}, 0.003));
+                        {0.02, -0.03, 0.35}, 0.003, 0.125));
   points.push_back(make("banked_southern", -33.0, 20.0, {-9.0, 18.0, -0.5}, {-12.0, 8.0, -150.0},
-                        {-0.1, 0.05, -0.5}, -0.004));
+                        {-0.1, 0.05, -0.5}, -0.004, -0.06));
   points.push_back(make("slow_high_latitude", 71.0, 1200.0, {1.5, 0.8, 0.1}, {2.0, 15.0, 100.0},
-                        {0.01, 0.2, 0.05}, 0.0));
+                        {0.01, 0.2, 0.05}, 0.0, 0.01));
   return points;
 }
 
@@ -97,6 +101,7 @@ double step_for(int j) {
   if (j < sx::kAccelBias) return 1e-6;    // rad/s
   if (j < sx::kCoreCount) return 1e-4;    // m/s^2
   if (j >= sx::kLeverArm && j < sx::kLeverArm + 3) return 1e-3;  // m
+  if (j == sx::kGnssTimeOffset) return 1e-3;                       // s (the models are linear in it)
   return 1e-6;                            // scale factors, mounting angles
 }
 
@@ -214,6 +219,10 @@ std::vector<Model> models(const TestPoint& p) {
   const SpeedReading speed{12.0, 0.05};
   const Eigen::Vector3d mean_raw_rate(1e-4, -2e-4, 5e-5);
 
+  // The GNSS position moved by v_ant dt carries dt times the antenna velocity's rows, and with them
+  // what those leave out (|dt| < 1 s keeps each within its bound).
+  std::vector<NeglectedTerm> gnss_position_terms = list(kPointNeglected);
+  for (NeglectedTerm t : kAntennaVelocityNeglected) gnss_position_terms.push_back(t);
   std::vector<NeglectedTerm> ecef_velocity = list(kAntennaVelocityNeglected);
   ecef_velocity.push_back(kEcefAxesTurn);
   std::vector<NeglectedTerm> body_velocity = list(kBodyVelocityNeglected);
@@ -226,9 +235,9 @@ std::vector<Model> models(const TestPoint& p) {
 
   return {
       {"gnss_position", [=](const StateView& s) { return gnss_position_observation(s, gp, primary(s)); },
-       list(kPointNeglected)},
+       gnss_position_terms},
       {"gnss_position_secondary_receiver",
-       [=](const StateView& s) { return gnss_position_observation(s, gp, secondary(s)); }, list(kPointNeglected)},
+       [=](const StateView& s) { return gnss_position_observation(s, gp, secondary(s)); }, gnss_position_terms},
       {"gnss_velocity", [=](const StateView& s) { return gnss_velocity_observation(s, gv, primary(s)); },
        list(kAntennaVelocityNeglected)},
       {"gnss_velocity_secondary_receiver",
@@ -272,7 +281,8 @@ Eigen::Vector3d compensated_rate(const NavState& x, const Eigen::Vector3d& raw_r
 }
 
 Eigen::VectorXd residual_of(const Model& m, const NavState& x, const LocalEarth& earth, const TestPoint& p) {
-  const StateView view(x, earth, compensated_rate(x, p.raw_rate_rps), p.shift_s);
+  StateView view(x, earth, compensated_rate(x, p.raw_rate_rps), p.shift_s);
+  view.accel_ned_mps2 = p.accel_ned_mps2;
   return m.observe(view).residual;
 }
 
@@ -309,7 +319,8 @@ TEST(Jacobians, EveryMeasurementModelMatchesCentralDifferences) {
     // Earth quantities are those of the filter's covariance grid step: constants of the update.
     const LocalEarth earth = LocalEarth::at(p.x.lat_rad, p.x.height_m);
     for (const Model& m : models(p)) {
-      const StateView view(p.x, earth, compensated_rate(p.x, p.raw_rate_rps), p.shift_s);
+      StateView view(p.x, earth, compensated_rate(p.x, p.raw_rate_rps), p.shift_s);
+      view.accel_ned_mps2 = p.accel_ned_mps2;
       const Observation obs = m.observe(view);
       ASSERT_GT(obs.rows(), 0) << m.name;
       Eigen::MatrixXd numeric(obs.rows(), sx::kCount);

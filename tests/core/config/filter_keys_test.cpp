@@ -16,7 +16,8 @@ using test::error_of;
 TEST(SwitchKeys, ParseTrueAndFalseOnly) {
   const Config on = load_from_string(
       "imu: {estimate_gyro_scale: true, estimate_accel_scale: true, estimate_mounting: true}\n"
-      "gnss: {estimate_lever_arm: true}\n");
+      "gnss: {estimate_lever_arm: true, estimate_time_offset: true}\n");
+  EXPECT_TRUE(on.gnss.estimate_time_offset);
   EXPECT_TRUE(on.imu.estimate_gyro_scale);
   EXPECT_TRUE(on.imu.estimate_accel_scale);
   EXPECT_TRUE(on.imu.estimate_mounting);
@@ -96,6 +97,8 @@ TEST(FilterKeys, OutOfPhysicalRangeRefusedNamingTheKey) {
       {"gnss: {timeout_s: 0}", "gnss.timeout_s: must be in (0, 600], got 0"},
       {"gnss: {recovery_s: 1e4}", "gnss.recovery_s: must be in (0, 600], got 1e4"},
       {"gnss: {initial_lever_arm_std_m: -0.1}", "gnss.initial_lever_arm_std_m: must be in (0, 100], got -0.1"},
+      {"gnss: {initial_time_offset_std_s: 0}", "gnss.initial_time_offset_std_s: must be in (0, 1], got 0"},
+      {"gnss: {initial_time_offset_std_s: 2}", "gnss.initial_time_offset_std_s: must be in (0, 1], got 2"},
       {"imu: {max_gap_s: 0}", "imu.max_gap_s: must be in (0, 10], got 0"},
       {"imu: {initial_gyro_scale_std_ppm: 0}", "imu.initial_gyro_scale_std_ppm: must be in (0, 100000], got 0"},
       {"imu: {initial_mounting_std_deg: 200}", "imu.initial_mounting_std_deg: must be in (0, 180], got 200"},
