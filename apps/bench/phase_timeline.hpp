@@ -8,6 +8,10 @@
 //    max(1 s, 2.5 fix intervals). A receiver's own dead-reckoned fix is not a fix.
 //  - stationary: navfuse's own zero-velocity detection (NavSolution::kStatusStationary), the
 //    only motion test on the log that does not depend on a solution's errors.
+//
+// The label points (one per navfuse pose) are kept on disk (apps/common/spill_file.hpp) and read
+// back by cursors at increasing times; the outage and stationary intervals are built as points are
+// added. The GNSS fix times are sorted externally. Memory does not grow with the log.
 #pragma once
 
 #include <cstdint>
@@ -15,11 +19,20 @@
 #include <string>
 #include <vector>
 
+#include "apps/common/external_sort.hpp"
+#include "apps/common/spill_file.hpp"
+
 namespace navfuse::apps::bench {
 
 struct PhaseLabel {
   bool gnss_outage = false;
   bool stationary = false;
+};
+
+// One label point as stored.
+struct PhasePointRecord {
+  std::int64_t time_ns = 0;
+  PhaseLabel label;
 };
 
 struct TimeInterval {
@@ -34,31 +47,68 @@ class PhaseTimeline {
   // Points must come in increasing time order; an earlier or equal time is ignored.
   void add(std::int64_t time_ns, PhaseLabel label);
 
-  // The label in effect at `time_ns` (before the first point: the first point's); nullopt when
-  // the timeline is empty.
-  std::optional<PhaseLabel> at(std::int64_t time_ns) const;
+  // Reads the labels at non-decreasing times (an earlier time restarts from the first point).
+  // The timeline must outlive the cursor.
+  class Cursor {
+   public:
+    // The label in effect at `time_ns` (before the first point: the first point's); nullopt when
+    // the timeline is empty.
+    std::optional<PhaseLabel> at(std::int64_t time_ns);
+
+   private:
+    friend class PhaseTimeline;
+    explicit Cursor(const PhaseTimeline& timeline) : timeline_(&timeline), reader_(timeline.points_.reader()) {}
+    const PhaseTimeline* timeline_;
+    SpillFile<PhasePointRecord>::Reader reader_;
+    std::optional<PhasePointRecord> current_, next_;
+    bool started_ = false;
+    std::int64_t last_asked_ns_ = 0;
+  };
+  Cursor cursor() const { return Cursor(*this); }
 
   // Maximal runs of points with gnss_outage (or stationary) set. A run ends at the first point
   // without the flag, or at the last point.
-  std::vector<TimeInterval> outages() const { return runs(&PhaseLabel::gnss_outage); }
-  std::vector<TimeInterval> stationary_periods() const { return runs(&PhaseLabel::stationary); }
+  std::vector<TimeInterval> outages() const { return outages_.intervals(last_ns_); }
+  std::vector<TimeInterval> stationary_periods() const { return stationary_.intervals(last_ns_); }
 
   const std::string& source() const { return source_; }  // "truth" or "log"
-  bool empty() const { return times_.empty(); }
+  bool empty() const { return points_.empty(); }
 
  private:
-  std::vector<TimeInterval> runs(bool PhaseLabel::*flag) const;
+  // The runs of one flag, built point by point.
+  struct Runs {
+    std::vector<TimeInterval> closed;
+    std::optional<std::int64_t> open_since_ns;
+    void add(std::int64_t time_ns, bool on);
+    std::vector<TimeInterval> intervals(std::int64_t last_ns) const;
+  };
 
   std::string source_;
-  std::vector<std::int64_t> times_;
-  std::vector<PhaseLabel> labels_;
+  SpillFile<PhasePointRecord> points_{4096};
+  std::int64_t last_ns_ = 0;
+  Runs outages_, stationary_;
 };
 
-// The age beyond which the last GNSS fix no longer counts as "GNSS available": max(1 s, 2.5
-// median fix intervals). `fix_times_ns` sorted.
-std::int64_t max_fix_age_ns(const std::vector<std::int64_t>& fix_times_ns);
+// Whether GNSS was in an outage at a time, from the log's fix times: the age beyond which the last
+// fix no longer counts as "GNSS available" is max(1 s, 2.5 median fix intervals).
+class GnssOutageDetector {
+ public:
+  // `fix_times_ns` must outlive the detector.
+  explicit GnssOutageDetector(const ExternalSort<std::int64_t>& fix_times_ns);
 
-// True when no fix lies in [time_ns - max_age_ns, time_ns]. `fix_times_ns` sorted.
-bool in_gnss_outage(const std::vector<std::int64_t>& fix_times_ns, std::int64_t time_ns, std::int64_t max_age_ns);
+  std::int64_t max_fix_age_ns() const { return max_age_ns_; }
+  // True when no fix lies in [time_ns - max_fix_age_ns, time_ns]. Cheapest at non-decreasing
+  // times (an earlier time restarts from the first fix).
+  bool at(std::int64_t time_ns);
+
+ private:
+  const ExternalSort<std::int64_t>* fixes_;
+  std::int64_t max_age_ns_;
+  ExternalSort<std::int64_t>::Reader reader_;
+  std::optional<std::int64_t> last_fix_ns_;  // last fix at or before the last time asked
+  std::optional<std::int64_t> next_fix_ns_;  // the fix after it
+  std::int64_t last_asked_ns_ = 0;
+  bool started_ = false;
+};
 
 }  // namespace navfuse::apps::bench
