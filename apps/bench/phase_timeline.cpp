@@ -31,24 +31,13 @@ std::vector<TimeInterval> PhaseTimeline::Runs::intervals(std::int64_t last_ns) c
 }
 
 std::optional<PhaseLabel> PhaseTimeline::Cursor::at(std::int64_t time_ns) {
-  if (started_ && time_ns < last_asked_ns_) *this = timeline_->cursor();
-  if (!started_) {
-    started_ = true;
-    if (PhasePointRecord p; reader_.next(p)) current_ = p;
-    if (PhasePointRecord p; reader_.next(p)) next_ = p;
-  }
+  if (last_asked_ns_ && time_ns < *last_asked_ns_) points_ = Points(timeline_->points_.reader(), &time_of);
   last_asked_ns_ = time_ns;
-  if (!current_) return std::nullopt;
-  // The last point at or before the time (the first point before it).
-  while (next_ && next_->time_ns <= time_ns) {
-    current_ = next_;
-    if (PhasePointRecord p; reader_.next(p)) {
-      next_ = p;
-    } else {
-      next_.reset();
-    }
-  }
-  return current_->label;
+  points_.advance(time_ns, /*inclusive=*/true);
+  // The last point at or before the time; before the first point, the first point's.
+  if (points_.last()) return points_.last()->label;
+  if (points_.next()) return points_.next()->label;
+  return std::nullopt;
 }
 
 namespace {
@@ -65,31 +54,14 @@ std::int64_t max_fix_age(const ExternalSort<std::int64_t>& fix_times_ns) {
 }  // namespace
 
 GnssOutageDetector::GnssOutageDetector(const ExternalSort<std::int64_t>& fix_times_ns)
-    : fixes_(&fix_times_ns), max_age_ns_(max_fix_age(fix_times_ns)), reader_(fix_times_ns.sorted()) {}
+    : fix_times_ns_(&fix_times_ns), max_age_ns_(max_fix_age(fix_times_ns)), fixes_(fix_times_ns.sorted(), &time_of) {}
 
 bool GnssOutageDetector::at(std::int64_t time_ns) {
-  if (started_ && time_ns < last_asked_ns_) {
-    reader_ = fixes_->sorted();
-    last_fix_ns_.reset();
-    next_fix_ns_.reset();
-    started_ = false;
-  }
-  if (!started_) {
-    started_ = true;
-    if (std::int64_t t; reader_.next(t)) next_fix_ns_ = t;
-  }
+  if (last_asked_ns_ && time_ns < *last_asked_ns_) fixes_ = Fixes(fix_times_ns_->sorted(), &time_of);
   last_asked_ns_ = time_ns;
-  // Last fix at or before the time.
-  while (next_fix_ns_ && *next_fix_ns_ <= time_ns) {
-    last_fix_ns_ = next_fix_ns_;
-    if (std::int64_t t; reader_.next(t)) {
-      next_fix_ns_ = t;
-    } else {
-      next_fix_ns_.reset();
-    }
-  }
-  if (!last_fix_ns_) return true;
-  return time_ns - *last_fix_ns_ > max_age_ns_;
+  fixes_.advance(time_ns, /*inclusive=*/true);
+  if (!fixes_.last()) return true;
+  return time_ns - *fixes_.last() > max_age_ns_;
 }
 
 }  // namespace navfuse::apps::bench

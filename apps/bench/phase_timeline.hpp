@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/bench/forward_cursor.hpp"
 #include "apps/common/external_sort.hpp"
 #include "apps/common/spill_file.hpp"
 
@@ -57,12 +58,13 @@ class PhaseTimeline {
 
    private:
     friend class PhaseTimeline;
-    explicit Cursor(const PhaseTimeline& timeline) : timeline_(&timeline), reader_(timeline.points_.reader()) {}
+    static std::int64_t time_of(const PhasePointRecord& p) { return p.time_ns; }
+    using Points = ForwardCursor<SpillFile<PhasePointRecord>::Reader, PhasePointRecord, decltype(&time_of)>;
+    explicit Cursor(const PhaseTimeline& timeline)
+        : timeline_(&timeline), points_(timeline.points_.reader(), &time_of) {}
     const PhaseTimeline* timeline_;
-    SpillFile<PhasePointRecord>::Reader reader_;
-    std::optional<PhasePointRecord> current_, next_;
-    bool started_ = false;
-    std::int64_t last_asked_ns_ = 0;
+    Points points_;
+    std::optional<std::int64_t> last_asked_ns_;
   };
   Cursor cursor() const { return Cursor(*this); }
 
@@ -102,13 +104,13 @@ class GnssOutageDetector {
   bool at(std::int64_t time_ns);
 
  private:
-  const ExternalSort<std::int64_t>* fixes_;
+  static std::int64_t time_of(const std::int64_t& t) { return t; }
+  using Fixes = ForwardCursor<ExternalSort<std::int64_t>::Reader, std::int64_t, decltype(&time_of)>;
+
+  const ExternalSort<std::int64_t>* fix_times_ns_;
   std::int64_t max_age_ns_;
-  ExternalSort<std::int64_t>::Reader reader_;
-  std::optional<std::int64_t> last_fix_ns_;  // last fix at or before the last time asked
-  std::optional<std::int64_t> next_fix_ns_;  // the fix after it
-  std::int64_t last_asked_ns_ = 0;
-  bool started_ = false;
+  Fixes fixes_;  // last(): the last fix at or before the last time asked
+  std::optional<std::int64_t> last_asked_ns_;
 };
 
 }  // namespace navfuse::apps::bench

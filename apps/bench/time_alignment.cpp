@@ -39,47 +39,31 @@ TrackSample interpolate(const TrackSample& a, const TrackSample& b, double f) {
 }
 
 TrackInterpolator::TrackInterpolator(const TrackView& samples, std::int64_t max_gap_ns)
-    : samples_(samples), max_gap_ns_(max_gap_ns), reader_(samples_.reader()) {
-  restart();
-}
-
-void TrackInterpolator::restart() {
-  reader_ = samples_.reader();
-  before_.reset();
-  after_.reset();
-  if (TrackSample s; reader_.next(s)) after_ = s;
-  last_asked_ns_.reset();
-}
+    : samples_(samples), max_gap_ns_(max_gap_ns), cursor_(samples_.reader(), &time_of) {}
 
 std::optional<TrackSample> TrackInterpolator::at(std::int64_t time_ns, Miss* miss) {
   const auto report = [&](Miss m) {
     if (miss != nullptr) *miss = m;
   };
-  if (last_asked_ns_ && time_ns < *last_asked_ns_) restart();
+  if (last_asked_ns_ && time_ns < *last_asked_ns_) cursor_ = Cursor(samples_.reader(), &time_of);
   last_asked_ns_ = time_ns;
-  // Move to the first sample at or after the time.
-  while (after_ && after_->time_ns < time_ns) {
-    before_ = after_;
-    if (TrackSample s; reader_.next(s)) {
-      after_ = s;
-    } else {
-      after_.reset();
-    }
-  }
-  if (!after_) {
+  cursor_.advance(time_ns, /*inclusive=*/false);
+  const std::optional<TrackSample>& before = cursor_.last();
+  const std::optional<TrackSample>& after = cursor_.next();
+  if (!after) {
     report(Miss::kOutside);
     return std::nullopt;
   }
-  if (after_->time_ns == time_ns) {
+  if (after->time_ns == time_ns) {
     report(Miss::kNone);
-    return *after_;
+    return *after;
   }
-  if (!before_) {
+  if (!before) {
     report(Miss::kOutside);
     return std::nullopt;
   }
-  const TrackSample& a = *before_;
-  const TrackSample& b = *after_;
+  const TrackSample& a = *before;
+  const TrackSample& b = *after;
   if (b.time_ns - a.time_ns > max_gap_ns_) {
     report(Miss::kGap);
     return std::nullopt;

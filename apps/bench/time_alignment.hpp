@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "apps/bench/forward_cursor.hpp"
 #include "apps/bench/solution_track.hpp"
 
 namespace navfuse::apps::bench {
@@ -50,13 +51,13 @@ class TrackInterpolator {
   bool empty() const { return samples_.empty(); }
 
  private:
-  void restart();
+  static std::int64_t time_of(const TrackSample& s) { return s.time_ns; }
+  using Cursor = ForwardCursor<TrackView::Reader, TrackSample, decltype(&time_of)>;
 
   TrackView samples_;
   std::int64_t max_gap_ns_;
-  TrackView::Reader reader_;
-  std::optional<TrackSample> before_;  // the last sample before the last time asked
-  std::optional<TrackSample> after_;   // the first sample at or after it (none: past the end)
+  // last(): the last sample before the last time asked; next(): the first at or after it.
+  Cursor cursor_;
   std::optional<std::int64_t> last_asked_ns_;
 };
 
