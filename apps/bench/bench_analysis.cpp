@@ -11,7 +11,7 @@
 namespace navfuse::apps::bench {
 namespace {
 
-using View = std::vector<const TrackSample*>;
+using View = TrackView;
 
 std::int64_t gap_limit_ns(const View& view, const AnalysisOptions& options) {
   if (options.max_gap_s) return static_cast<std::int64_t>(*options.max_gap_s * 1e9);
@@ -23,17 +23,18 @@ std::string span_text(const View& view, std::int64_t start_ns) {
   if (view.empty()) return "no valid samples";
   char text[96];
   std::snprintf(text, sizeof text, "%.1f .. %.1f s after the log start",
-                static_cast<double>(view.front()->time_ns - start_ns) * 1e-9,
-                static_cast<double>(view.back()->time_ns - start_ns) * 1e-9);
+                static_cast<double>(view.first_ns() - start_ns) * 1e-9,
+                static_cast<double>(view.last_ns() - start_ns) * 1e-9);
   return text;
 }
 
 PhaseTimeline phase_timeline(const BenchLog& log, const AnalysisOptions& options,
-                             std::vector<TrackSample>& truth_at_poses) {
+                             SpillFile<TrackSample>& truth_at_poses) {
+  SolutionTrack::Reader poses = log.navfuse.reader();
   if (!options.truth_path.empty()) {
     PhaseTimeline timeline("truth");
     TruthReference truth(options.truth_path);
-    for (const TrackSample& pose : log.navfuse.samples()) {
+    for (TrackSample pose; poses.next(pose);) {
       if (const auto t = truth.at(pose.time_ns)) {
         timeline.add(pose.time_ns, {.gnss_outage = (t->status_flags & NavSolution::kStatusGnssOutage) != 0,
                                     .stationary = (t->status_flags & NavSolution::kStatusStationary) != 0});
@@ -43,9 +44,9 @@ PhaseTimeline phase_timeline(const BenchLog& log, const AnalysisOptions& options
     return timeline;
   }
   PhaseTimeline timeline("log");
-  const std::int64_t max_age_ns = max_fix_age_ns(log.gnss_fix_times_ns);
-  for (const TrackSample& pose : log.navfuse.samples()) {
-    timeline.add(pose.time_ns, {.gnss_outage = in_gnss_outage(log.gnss_fix_times_ns, pose.time_ns, max_age_ns),
+  GnssOutageDetector outage(log.gnss_fix_times_ns);
+  for (TrackSample pose; poses.next(pose);) {
+    timeline.add(pose.time_ns, {.gnss_outage = outage.at(pose.time_ns),
                                 .stationary = (pose.status_flags & NavSolution::kStatusStationary) != 0});
   }
   return timeline;
@@ -56,7 +57,8 @@ PhaseTimeline phase_timeline(const BenchLog& log, const AnalysisOptions& options
 // decimetre lever arm in a turn; attitude is the same at both points.
 SolutionTrack moved_to_antenna(const SolutionTrack& track, const Eigen::Vector3d& lever_arm_m) {
   SolutionTrack out;
-  for (TrackSample s : track.samples()) {
+  SolutionTrack::Reader reader = track.reader();
+  for (TrackSample s; reader.next(s);) {
     if ((s.valid & NavSolution::kValidPosition) != 0 && (s.valid & NavSolution::kValidAttitude) != 0) {
       const geo::Llh p = geo::llh_offset({s.lat_rad, s.lon_rad, s.height_m}, rot::dcm_from_rpy(s.rpy_rad) * lever_arm_m);
       s.lat_rad = p.lat_rad;
@@ -89,7 +91,7 @@ void compare_with_smoothed(const BenchLog& log, const AnalysisOptions& options, 
                            BenchAnalysis& a) {
   const View smoothed = log.smoothed.with(Quantity::kPosition, /*navigating_only=*/true);
   if (smoothed.empty()) throw CommandError("empty overlap: the smoother produced no navigation solution to compare with");
-  const TrackInterpolator track(smoothed, gap_limit_ns(smoothed, options));
+  TrackInterpolator track(smoothed, gap_limit_ns(smoothed, options));
   const PairSpec navfuse_spec{.name = "navfuse_vs_smoothed", .estimate = "navfuse", .reference = "smoothed",
                               .reference_is_truth = true, .sampled_is_estimate = true};
   a.pairs.push_back(compare_pair(navfuse_spec, navfuse, interpolating_lookup(track), a.phases));
@@ -122,8 +124,7 @@ BenchAnalysis analyse(const BenchLog& log, const AnalysisOptions& options) {
   }
   // A device still initialising may flag fields valid that hold no solution yet (zeros): only
   // samples from a mode with an estimate are compared.
-  View device = log.device.with_any();
-  std::erase_if(device, [](const TrackSample* s) { return s->mode <= NavMode::kInitializing; });
+  const View device(log.device, {.quantity = std::nullopt, .navigating_only = false, .estimating_only = true});
   const bool with_device = !log.device.empty();
   if (with_device) {
     a.device_timing = solution_timing(log.device, log.start_ns);
@@ -137,7 +138,7 @@ BenchAnalysis analyse(const BenchLog& log, const AnalysisOptions& options) {
   }
 
   if (with_device) {
-    const TrackInterpolator navfuse_track(navfuse, gap_limit_ns(navfuse, options));
+    TrackInterpolator navfuse_track(navfuse, gap_limit_ns(navfuse, options));
     const PairSpec spec{.name = "navfuse_vs_device", .estimate = "navfuse", .reference = "device",
                         .reference_is_truth = false, .sampled_is_estimate = false};
     a.pairs.push_back(compare_pair(spec, device, interpolating_lookup(navfuse_track), a.phases));
@@ -156,7 +157,7 @@ BenchAnalysis analyse(const BenchLog& log, const AnalysisOptions& options) {
     if (truth.sparse()) {
       // A 1-10 Hz reference: compared at its epochs, navfuse interpolated to them.
       const SolutionTrack epochs = truth.epochs();
-      const TrackInterpolator navfuse_track(estimate, gap_limit_ns(estimate, options));
+      TrackInterpolator navfuse_track(estimate, gap_limit_ns(estimate, options));
       const PairSpec spec{.name = "navfuse_vs_truth", .estimate = "navfuse", .reference = "truth",
                           .reference_is_truth = true, .sampled_is_estimate = false};
       a.pairs.push_back(compare_pair(spec, epochs.with_any(), interpolating_lookup(navfuse_track), a.phases));

@@ -29,7 +29,7 @@ struct AnalysisOptions {
 struct BenchAnalysis {
   PhaseTimeline phases;
   std::vector<PairComparison> pairs;       // in metrics.json order, only those that apply
-  std::vector<TrackSample> truth_at_poses;  // truth at navfuse's pose times (for the plots)
+  SpillFile<TrackSample> truth_at_poses{256};  // truth at navfuse's pose times (for the plots)
   SolutionTiming navfuse_timing;
   std::optional<SolutionTiming> device_timing;
   std::vector<std::string> notes;  // things the reader should know (no device solution...)

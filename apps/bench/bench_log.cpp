@@ -1,6 +1,5 @@
 #include "apps/bench/bench_log.hpp"
 
-#include <algorithm>
 #include <memory>
 #include <stdexcept>
 
@@ -55,7 +54,7 @@ class BenchObserver final : public FusionObserver {
   }
   void on_fused(const Measurement& m) override {
     if (kind_of(m) == MeasurementKind::kGnssPosition && is_fix(std::get<GnssPosition>(m))) {
-      log_.gnss_fix_times_ns.push_back(header_of(m).time_ns);
+      log_.gnss_fix_times_ns.add(header_of(m).time_ns);
     }
   }
   void on_epoch(const OutputEpoch& epoch, const filter::Engine&) override {
@@ -128,7 +127,6 @@ BenchLog collect_bench_log(const BenchLogOptions& options) {
                        input_name(specs, imu_header->stream_id) + " by " +
                        std::string(to_string(imu_header->time_source)) + "; the two cannot be aligned");
   }
-  std::sort(log.gnss_fix_times_ns.begin(), log.gnss_fix_times_ns.end());
   return log;
 }
 

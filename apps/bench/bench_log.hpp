@@ -1,7 +1,9 @@
 // What `navfuse bench` takes from a log: it runs the log's sensor data through the filter exactly
 // as `navfuse replay` does (same input merge, time-base gate, configuration and pose output
 // rate, so the poses are the ones replay writes), and keeps, alongside navfuse's poses, the
-// device's own solution from the same log and the times of its GNSS fixes.
+// device's own solution from the same log and the times of its GNSS fixes. All of them are kept
+// on disk as they come (solution_track.hpp), so collecting a long log takes no more memory than
+// replaying it.
 //
 // The device solution is taken from one input: the first that carries one (a second device's
 // solutions are counted and left out). It must be on the IMU's time base, or the two cannot be
@@ -15,6 +17,7 @@
 #include <vector>
 
 #include "apps/bench/solution_track.hpp"
+#include "apps/common/external_sort.hpp"
 #include "apps/common/summary.hpp"
 #include "core/measurements/measurements.hpp"
 
@@ -39,7 +42,7 @@ struct BenchLog {
   std::optional<std::size_t> device_input;  // index into `inputs` of the device's stream
   std::string device_format;                // "vn", "mip", "unicore", "fe"
   std::uint64_t other_device_solutions = 0;  // from a second input, not compared
-  std::vector<std::int64_t> gnss_fix_times_ns;  // sorted
+  ExternalSort<std::int64_t> gnss_fix_times_ns;  // read back sorted
   std::int64_t start_ns = 0;                     // first IMU sample
   std::int64_t end_ns = 0;                       // last IMU sample
   TimeSource time_source = TimeSource::kUnknown;  // the IMU's (and so navfuse's) time base

@@ -19,34 +19,35 @@ nlohmann::ordered_json PairComparison::to_json() const {
   return j;
 }
 
-PairComparison compare_pair(const PairSpec& spec, const std::vector<const TrackSample*>& sampled,
-                            const SolutionLookup& other, const PhaseTimeline& phases) {
+PairComparison compare_pair(const PairSpec& spec, const TrackView& sampled, const SolutionLookup& other,
+                            const PhaseTimeline& phases) {
   PairComparison out;
   out.spec = spec;
-  for (const TrackSample* s : sampled) {
+  PhaseTimeline::Cursor phase = phases.cursor();
+  TrackView::Reader reader = sampled.reader();
+  for (TrackSample s; reader.next(s);) {
     TrackInterpolator::Miss miss = TrackInterpolator::Miss::kNone;
-    const std::optional<TrackSample> o = other(s->time_ns, &miss);
+    const std::optional<TrackSample> o = other(s.time_ns, &miss);
     if (!o) {
       ++(miss == TrackInterpolator::Miss::kGap ? out.gaps : out.outside);
       continue;
     }
-    const TrackSample& est = spec.sampled_is_estimate ? *s : *o;
-    const TrackSample& ref = spec.sampled_is_estimate ? *o : *s;
+    const TrackSample& est = spec.sampled_is_estimate ? s : *o;
+    const TrackSample& ref = spec.sampled_is_estimate ? *o : s;
     SolutionError e = solution_error(est, ref, spec.reference_is_truth);
     if (!e.any()) {
       ++out.no_common_quantity;
       continue;
     }
-    e.time_ns = s->time_ns;
-    const std::optional<PhaseLabel> label = phases.at(s->time_ns);
+    e.time_ns = s.time_ns;
+    const std::optional<PhaseLabel> label = phase.at(s.time_ns);
     out.metrics.add(e, label);
-    out.errors.push_back(e);
-    out.phases.push_back(label);
+    out.errors.push_back({.error = e, .phase = label});
   }
   return out;
 }
 
-SolutionLookup interpolating_lookup(const TrackInterpolator& track) {
+SolutionLookup interpolating_lookup(TrackInterpolator& track) {
   return [&track](std::int64_t time_ns, TrackInterpolator::Miss* miss) { return track.at(time_ns, miss); };
 }
 

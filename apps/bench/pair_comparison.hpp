@@ -7,13 +7,16 @@
 // device's times against navfuse (devices often report slower than navfuse's output rate, and
 // interpolating the denser track loses least) and at each solution's own times against truth
 // (as replay does).
+//
+// The aligned errors go to a temporary file (apps/common/spill_file.hpp) as they are computed
+// and the statistics are exact without holding the values (apps/replay/error_stats.hpp): a
+// comparison's memory does not grow with the log.
 #pragma once
 
 #include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
-#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -22,6 +25,20 @@
 #include "apps/bench/phase_timeline.hpp"
 #include "apps/bench/solution_track.hpp"
 #include "apps/bench/time_alignment.hpp"
+
+namespace navfuse::apps::bench {
+
+// One aligned time of a pair: the errors and the phase there (nullopt: unknown).
+struct AlignedError {
+  SolutionError error;
+  std::optional<PhaseLabel> phase;
+};
+
+}  // namespace navfuse::apps::bench
+
+// Plain values (Eigen fixed-size vectors are arrays of doubles): spilled as bytes.
+template <>
+inline constexpr bool navfuse::apps::kSpillableAsBytes<navfuse::apps::bench::AlignedError> = true;
 
 namespace navfuse::apps::bench {
 
@@ -38,8 +55,7 @@ using SolutionLookup = std::function<std::optional<TrackSample>(std::int64_t tim
 
 struct PairComparison {
   PairSpec spec;
-  std::vector<SolutionError> errors;             // aligned times, in time order
-  std::vector<std::optional<PhaseLabel>> phases;  // parallel to errors
+  SpillFile<AlignedError> errors{512};  // aligned times, in time order
   PhasedMetrics metrics;
   std::uint64_t outside = 0;  // sampled times outside the other solution's span
   std::uint64_t gaps = 0;     // sampled times inside a gap of the other solution
@@ -53,10 +69,11 @@ struct PairComparison {
   nlohmann::ordered_json to_json() const;
 };
 
-PairComparison compare_pair(const PairSpec& spec, const std::vector<const TrackSample*>& sampled,
-                            const SolutionLookup& other, const PhaseTimeline& phases);
+// `other` is asked at the sampled times, in increasing order.
+PairComparison compare_pair(const PairSpec& spec, const TrackView& sampled, const SolutionLookup& other,
+                            const PhaseTimeline& phases);
 
-// A lookup into a solution track by interpolation.
-SolutionLookup interpolating_lookup(const TrackInterpolator& track);
+// A lookup into a solution track by interpolation (`track` must outlive it).
+SolutionLookup interpolating_lookup(TrackInterpolator& track);
 
 }  // namespace navfuse::apps::bench

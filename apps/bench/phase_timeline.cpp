@@ -3,54 +3,65 @@
 #include <algorithm>
 #include <cmath>
 
+#include "apps/bench/interval_median.hpp"
+
 namespace navfuse::apps::bench {
 
 void PhaseTimeline::add(std::int64_t time_ns, PhaseLabel label) {
-  if (!times_.empty() && time_ns <= times_.back()) return;
-  times_.push_back(time_ns);
-  labels_.push_back(label);
+  if (!points_.empty() && time_ns <= last_ns_) return;
+  points_.push_back({.time_ns = time_ns, .label = label});
+  last_ns_ = time_ns;
+  outages_.add(time_ns, label.gnss_outage);
+  stationary_.add(time_ns, label.stationary);
 }
 
-std::optional<PhaseLabel> PhaseTimeline::at(std::int64_t time_ns) const {
-  if (times_.empty()) return std::nullopt;
-  const auto after = std::upper_bound(times_.begin(), times_.end(), time_ns);
-  const std::size_t i = after == times_.begin() ? 0 : static_cast<std::size_t>(after - times_.begin()) - 1;
-  return labels_[i];
-}
-
-std::vector<TimeInterval> PhaseTimeline::runs(bool PhaseLabel::*flag) const {
-  std::vector<TimeInterval> out;
-  bool open = false;
-  for (std::size_t i = 0; i < times_.size(); ++i) {
-    const bool on = labels_[i].*flag;
-    if (on && !open) {
-      out.push_back({times_[i], times_[i]});
-      open = true;
-    } else if (!on && open) {
-      out.back().end_ns = times_[i];
-      open = false;
-    }
+void PhaseTimeline::Runs::add(std::int64_t time_ns, bool on) {
+  if (on && !open_since_ns) {
+    open_since_ns = time_ns;
+  } else if (!on && open_since_ns) {
+    closed.push_back({*open_since_ns, time_ns});
+    open_since_ns.reset();
   }
-  if (open) out.back().end_ns = times_.back();
+}
+
+std::vector<TimeInterval> PhaseTimeline::Runs::intervals(std::int64_t last_ns) const {
+  std::vector<TimeInterval> out = closed;
+  if (open_since_ns) out.push_back({*open_since_ns, last_ns});
   return out;
 }
 
-std::int64_t max_fix_age_ns(const std::vector<std::int64_t>& fix_times_ns) {
-  constexpr std::int64_t kMinAgeNs = 1'000'000'000;
-  if (fix_times_ns.size() < 2) return kMinAgeNs;
-  std::vector<std::int64_t> dt;
-  dt.reserve(fix_times_ns.size() - 1);
-  for (std::size_t i = 1; i < fix_times_ns.size(); ++i) dt.push_back(fix_times_ns[i] - fix_times_ns[i - 1]);
-  const auto mid = dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2);
-  std::nth_element(dt.begin(), mid, dt.end());
-  return std::max(kMinAgeNs, static_cast<std::int64_t>(std::llround(2.5 * static_cast<double>(*mid))));
+std::optional<PhaseLabel> PhaseTimeline::Cursor::at(std::int64_t time_ns) {
+  if (last_asked_ns_ && time_ns < *last_asked_ns_) points_ = Points(timeline_->points_.reader(), &time_of);
+  last_asked_ns_ = time_ns;
+  points_.advance(time_ns, /*inclusive=*/true);
+  // The last point at or before the time; before the first point, the first point's.
+  if (points_.last()) return points_.last()->label;
+  if (points_.next()) return points_.next()->label;
+  return std::nullopt;
 }
 
-bool in_gnss_outage(const std::vector<std::int64_t>& fix_times_ns, std::int64_t time_ns, std::int64_t max_age_ns) {
-  // Last fix at or before the time.
-  const auto after = std::upper_bound(fix_times_ns.begin(), fix_times_ns.end(), time_ns);
-  if (after == fix_times_ns.begin()) return true;
-  return time_ns - *(after - 1) > max_age_ns;
+namespace {
+
+std::int64_t max_fix_age(const ExternalSort<std::int64_t>& fix_times_ns) {
+  constexpr std::int64_t kMinAgeNs = 1'000'000'000;
+  if (fix_times_ns.size() < 2) return kMinAgeNs;
+  IntervalMedian median;
+  auto sorted = fix_times_ns.sorted();
+  for (std::int64_t t; sorted.next(t);) median.add(t);
+  return std::max(kMinAgeNs, static_cast<std::int64_t>(std::llround(2.5 * static_cast<double>(median.median_ns()))));
+}
+
+}  // namespace
+
+GnssOutageDetector::GnssOutageDetector(const ExternalSort<std::int64_t>& fix_times_ns)
+    : fix_times_ns_(&fix_times_ns), max_age_ns_(max_fix_age(fix_times_ns)), fixes_(fix_times_ns.sorted(), &time_of) {}
+
+bool GnssOutageDetector::at(std::int64_t time_ns) {
+  if (last_asked_ns_ && time_ns < *last_asked_ns_) fixes_ = Fixes(fix_times_ns_->sorted(), &time_of);
+  last_asked_ns_ = time_ns;
+  fixes_.advance(time_ns, /*inclusive=*/true);
+  if (!fixes_.last()) return true;
+  return time_ns - *fixes_.last() > max_age_ns_;
 }
 
 }  // namespace navfuse::apps::bench

@@ -57,18 +57,16 @@ struct Origin {
 
 Origin common_origin(const BenchLog& log, const BenchAnalysis& a) {
   for (const SolutionTrack* track : {&log.navfuse, &log.device}) {
-    for (const TrackSample* s : track->with(Quantity::kPosition, track == &log.navfuse)) {
+    if (const auto s = track->with(Quantity::kPosition, track == &log.navfuse).front()) {
       return {{s->lat_rad, s->lon_rad, s->height_m}, true};
     }
   }
-  if (!a.truth_at_poses.empty()) {
-    const auto& t = a.truth_at_poses.front();
-    return {{t.lat_rad, t.lon_rad, t.height_m}, true};
-  }
+  SpillFile<TrackSample>::Reader truth = a.truth_at_poses.reader();
+  if (TrackSample t; truth.next(t)) return {{t.lat_rad, t.lon_rad, t.height_m}, true};
   return {};
 }
 
-void write_track(const std::string& path, const std::vector<TrackSample>& samples, std::int64_t start_ns,
+void write_track(const std::string& path, SpillFile<TrackSample>::Reader samples, std::int64_t start_ns,
                  const Origin& origin) {
   CsvFile f(path);
   auto& o = f.out();
@@ -76,7 +74,7 @@ void write_track(const std::string& path, const std::vector<TrackSample>& sample
        "yaw_deg,std_north_m,std_east_m,std_down_m,std_vn_mps,std_ve_mps,std_vd_mps,std_roll_deg,std_pitch_deg,"
        "std_yaw_deg,gnss_outage,stationary\n";
   constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
-  for (const TrackSample& s : samples) {
+  for (TrackSample s; samples.next(s);) {
     // Before a solution has an estimate its fields are zeros rather than estimates, even if flagged.
     const bool estimating = s.mode > NavMode::kInitializing;
     const bool pos = estimating && has(s, Quantity::kPosition), vel = estimating && has(s, Quantity::kVelocity);
@@ -110,9 +108,10 @@ void write_pair(const std::string& path, const PairComparison& pair, std::int64_
        "sigma_north_m,sigma_east_m,sigma_down_m,sigma_vn_mps,sigma_ve_mps,sigma_vd_mps,sigma_roll_deg,"
        "sigma_pitch_deg,sigma_heading_deg\n";
   constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
-  for (std::size_t i = 0; i < pair.errors.size(); ++i) {
-    const SolutionError& e = pair.errors[i];
-    const auto& label = pair.phases[i];
+  SpillFile<AlignedError>::Reader rows = pair.errors.reader();
+  for (AlignedError row; rows.next(row);) {
+    const SolutionError& e = row.error;
+    const auto& label = row.phase;
     o << num(static_cast<double>(e.time_ns - start_ns) * 1e-9, 3) << ',' << time_text(e.time_ns) << ','
       << to_string(e.estimate_mode) << ',' << (label ? (label->gnss_outage ? "1" : "0") : "nan") << ','
       << (label ? (label->stationary ? "1" : "0") : "nan");
@@ -156,9 +155,11 @@ void write_phases(const std::string& path, const PhaseTimeline& phases, std::int
 
 void write_series_csvs(const std::string& dir, const BenchLog& log, const BenchAnalysis& analysis) {
   const Origin origin = common_origin(log, analysis);
-  write_track(dir + "/navfuse.csv", log.navfuse.samples(), log.start_ns, origin);
-  if (!log.device.empty()) write_track(dir + "/device.csv", log.device.samples(), log.start_ns, origin);
-  if (!analysis.truth_at_poses.empty()) write_track(dir + "/truth.csv", analysis.truth_at_poses, log.start_ns, origin);
+  write_track(dir + "/navfuse.csv", log.navfuse.reader(), log.start_ns, origin);
+  if (!log.device.empty()) write_track(dir + "/device.csv", log.device.reader(), log.start_ns, origin);
+  if (!analysis.truth_at_poses.empty()) {
+    write_track(dir + "/truth.csv", analysis.truth_at_poses.reader(), log.start_ns, origin);
+  }
   for (const PairComparison& pair : analysis.pairs) write_pair(dir + "/" + pair.spec.name + ".csv", pair, log.start_ns);
   write_phases(dir + "/phases.csv", analysis.phases, log.start_ns);
 }

@@ -7,16 +7,18 @@ namespace navfuse::apps::bench {
 SolutionTiming solution_timing(const SolutionTrack& track, std::int64_t log_start_ns) {
   SolutionTiming t;
   const auto since_start = [&](const TrackSample& s) { return static_cast<double>(s.time_ns - log_start_ns) * 1e-9; };
-  const auto& samples = track.samples();
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    const TrackSample& s = samples[i];
+  std::optional<TrackSample> previous;
+  const auto add_mode_time = [&](const TrackSample& s, std::int64_t until_ns) {
+    const auto m = static_cast<std::size_t>(s.mode);
+    if (m < t.mode_s.size()) t.mode_s[m] += static_cast<double>(until_ns - s.time_ns) * 1e-9;
+  };
+  SolutionTrack::Reader reader = track.reader();
+  for (TrackSample s; reader.next(s);) {
     if (!t.to_attitude_s && has(s, Quantity::kAttitude)) t.to_attitude_s = since_start(s);
     if (!t.to_heading_s && has(s, Quantity::kHeading)) t.to_heading_s = since_start(s);
     if (!t.to_navigation_s && is_navigating(s.mode) && has(s, Quantity::kPosition)) t.to_navigation_s = since_start(s);
-    const auto m = static_cast<std::size_t>(s.mode);
-    if (i + 1 < samples.size() && m < t.mode_s.size()) {
-      t.mode_s[m] += static_cast<double>(samples[i + 1].time_ns - s.time_ns) * 1e-9;
-    }
+    if (previous) add_mode_time(*previous, s.time_ns);
+    previous = s;
   }
   return t;
 }

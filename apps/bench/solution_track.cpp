@@ -98,25 +98,48 @@ bool SolutionTrack::append(const TrackSample& s) {
   return true;
 }
 
-std::vector<const TrackSample*> SolutionTrack::with(Quantity q, bool navigating_only) const {
-  std::vector<const TrackSample*> out;
-  for (const TrackSample& s : samples_) {
-    if (has(s, q) && (!navigating_only || is_navigating(s.mode))) out.push_back(&s);
-  }
-  return out;
+TrackView SolutionTrack::with(Quantity q, bool navigating_only) const {
+  return TrackView(*this, {.quantity = q, .navigating_only = navigating_only, .estimating_only = false});
 }
 
-std::vector<const TrackSample*> SolutionTrack::with_any() const {
-  std::vector<const TrackSample*> out;
-  for (const TrackSample& s : samples_) {
-    for (std::size_t q = 0; q < kQuantityCount; ++q) {
-      if (has(s, static_cast<Quantity>(q))) {
-        out.push_back(&s);
-        break;
-      }
-    }
+TrackView SolutionTrack::with_any() const {
+  return TrackView(*this, {.quantity = std::nullopt, .navigating_only = false, .estimating_only = false});
+}
+
+bool TrackFilter::matches(const TrackSample& s) const {
+  if (navigating_only && !is_navigating(s.mode)) return false;
+  if (estimating_only && s.mode <= NavMode::kInitializing) return false;
+  if (quantity) return has(s, *quantity);
+  for (std::size_t q = 0; q < kQuantityCount; ++q) {
+    if (has(s, static_cast<Quantity>(q))) return true;
   }
-  return out;
+  return false;
+}
+
+const TrackView::Extent& TrackView::extent() const {
+  if (!extent_) {
+    Extent e;
+    Reader r = reader();
+    for (TrackSample s; r.next(s);) {
+      if (e.size++ == 0) e.first_ns = s.time_ns;
+      e.last_ns = s.time_ns;
+    }
+    extent_ = e;
+  }
+  return *extent_;
+}
+
+bool TrackView::Reader::next(TrackSample& out) {
+  while (reader_.next(out)) {
+    if (filter_.matches(out)) return true;
+  }
+  return false;
+}
+
+std::optional<TrackSample> TrackView::front() const {
+  Reader r = reader();
+  if (TrackSample s; r.next(s)) return s;
+  return std::nullopt;
 }
 
 }  // namespace navfuse::apps::bench

@@ -1,8 +1,8 @@
 #include "apps/bench/time_alignment.hpp"
 
-#include <algorithm>
 #include <cmath>
 
+#include "apps/bench/interval_median.hpp"
 #include "core/rotation/rotation.hpp"
 
 namespace navfuse::apps::bench {
@@ -12,17 +12,14 @@ double shorter_arc_rad(double from_rad, double to_rad) { return std::remainder(t
 
 }  // namespace
 
-std::int64_t median_interval_ns(const std::vector<const TrackSample*>& samples) {
-  if (samples.size() < 2) return 0;
-  std::vector<std::int64_t> dt;
-  dt.reserve(samples.size() - 1);
-  for (std::size_t i = 1; i < samples.size(); ++i) dt.push_back(samples[i]->time_ns - samples[i - 1]->time_ns);
-  const auto mid = dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2);
-  std::nth_element(dt.begin(), mid, dt.end());
-  return *mid;
+std::int64_t median_interval_ns(const TrackView& samples) {
+  IntervalMedian median;
+  TrackView::Reader r = samples.reader();
+  for (TrackSample s; r.next(s);) median.add(s.time_ns);
+  return median.median_ns();
 }
 
-std::int64_t default_max_gap_ns(const std::vector<const TrackSample*>& samples) {
+std::int64_t default_max_gap_ns(const TrackView& samples) {
   return static_cast<std::int64_t>(std::llround(kDefaultGapIntervals * static_cast<double>(median_interval_ns(samples))));
 }
 
@@ -41,30 +38,32 @@ TrackSample interpolate(const TrackSample& a, const TrackSample& b, double f) {
   return s;
 }
 
-TrackInterpolator::TrackInterpolator(std::vector<const TrackSample*> samples, std::int64_t max_gap_ns)
-    : samples_(std::move(samples)), max_gap_ns_(max_gap_ns) {}
+TrackInterpolator::TrackInterpolator(const TrackView& samples, std::int64_t max_gap_ns)
+    : samples_(samples), max_gap_ns_(max_gap_ns), cursor_(samples_.reader(), &time_of) {}
 
-std::optional<TrackSample> TrackInterpolator::at(std::int64_t time_ns, Miss* miss) const {
+std::optional<TrackSample> TrackInterpolator::at(std::int64_t time_ns, Miss* miss) {
   const auto report = [&](Miss m) {
     if (miss != nullptr) *miss = m;
   };
-  // First sample at or after the time.
-  const auto after = std::lower_bound(samples_.begin(), samples_.end(), time_ns,
-                                      [](const TrackSample* s, std::int64_t t) { return s->time_ns < t; });
-  if (after == samples_.end()) {
+  if (last_asked_ns_ && time_ns < *last_asked_ns_) cursor_ = Cursor(samples_.reader(), &time_of);
+  last_asked_ns_ = time_ns;
+  cursor_.advance(time_ns, /*inclusive=*/false);
+  const std::optional<TrackSample>& before = cursor_.last();
+  const std::optional<TrackSample>& after = cursor_.next();
+  if (!after) {
     report(Miss::kOutside);
     return std::nullopt;
   }
-  if ((*after)->time_ns == time_ns) {
+  if (after->time_ns == time_ns) {
     report(Miss::kNone);
-    return **after;
+    return *after;
   }
-  if (after == samples_.begin()) {
+  if (!before) {
     report(Miss::kOutside);
     return std::nullopt;
   }
-  const TrackSample& a = **(after - 1);
-  const TrackSample& b = **after;
+  const TrackSample& a = *before;
+  const TrackSample& b = *after;
   if (b.time_ns - a.time_ns > max_gap_ns_) {
     report(Miss::kGap);
     return std::nullopt;

@@ -4,12 +4,18 @@
 //
 // Percentiles are nearest-rank (the smallest sample with at least p % of the samples at or
 // below it; Hyndman & Fan 1996 definition 1), so every reported figure is an actual sample.
+//
+// Memory is constant in the number of samples: the values are sorted externally
+// (apps/common/external_sort.hpp, runs spilled to a temporary file), and the summary reads them
+// back in ascending order: exact percentiles, and the sum of squares taken in ascending order as
+// an in-memory sort would give it, so the figures do not depend on the run length.
 #pragma once
 
 #include <cstddef>
-#include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "apps/common/external_sort.hpp"
 
 namespace navfuse::apps {
 
@@ -20,17 +26,18 @@ struct ErrorSummary {
 
 class ErrorStats {
  public:
-  void add(double error) { values_.push_back(error); }
+  void add(double error) { values_.add(error); }
   std::size_t size() const { return values_.size(); }
-  // Sorts a copy; call once at the end.
+  // One pass over the values in ascending order; call once at the end.
   ErrorSummary summary() const;
 
  private:
-  std::vector<double> values_;
+  ExternalSort<double> values_;
 };
 
-// Nearest-rank percentile of sorted values, p in (0, 100].
-double nearest_rank(const std::vector<double>& sorted, double p);
+// The 1-based rank of the nearest-rank p-th percentile of `count` values (count >= 1), p in
+// (0, 100].
+std::size_t nearest_rank(std::size_t count, double p);
 
 nlohmann::ordered_json to_json(const ErrorSummary& s);
 

@@ -50,7 +50,7 @@ TEST(PairComparison, ConstantOffsetsThroughTheHeadingWrapAndNoBridgingOfADropout
   for (std::int64_t t = 0; t <= 4000 * kMs; t += 100 * kMs) device.append(truth_at(t));
 
   const auto nf_view = navfuse.with(Quantity::kPosition, true);
-  const TrackInterpolator nf(nf_view, default_max_gap_ns(nf_view));
+  TrackInterpolator nf(nf_view, default_max_gap_ns(nf_view));
   PhaseTimeline phases;
   phases.add(0, {.gnss_outage = false, .stationary = false});
   phases.add(3000 * kMs, {.gnss_outage = true, .stationary = false});
@@ -89,9 +89,12 @@ TEST(PhaseTimeline, StepLabelsIntervalsAndGnssOutagesFromFixTimes) {
   timeline.add(10, {.gnss_outage = true, .stationary = false});
   timeline.add(20, {.gnss_outage = true, .stationary = false});
   timeline.add(30, {.gnss_outage = false, .stationary = false});
-  EXPECT_TRUE(timeline.at(-5)->stationary);
-  EXPECT_TRUE(timeline.at(15)->gnss_outage);
-  EXPECT_FALSE(timeline.at(35)->gnss_outage);
+  PhaseTimeline::Cursor cursor = timeline.cursor();
+  EXPECT_TRUE(cursor.at(-5)->stationary);
+  EXPECT_TRUE(cursor.at(15)->gnss_outage);
+  EXPECT_FALSE(cursor.at(35)->gnss_outage);
+  EXPECT_TRUE(cursor.at(10)->gnss_outage);  // back in time: read again from the start
+  EXPECT_FALSE(cursor.at(9)->gnss_outage);
   ASSERT_EQ(timeline.outages().size(), 1u);
   EXPECT_EQ(timeline.outages()[0].start_ns, 10);
   EXPECT_EQ(timeline.outages()[0].end_ns, 30);
@@ -99,16 +102,23 @@ TEST(PhaseTimeline, StepLabelsIntervalsAndGnssOutagesFromFixTimes) {
   EXPECT_EQ(timeline.stationary_periods()[0].end_ns, 10);
 
   // 5 Hz fixes with a 10 s hole: the age limit is max(1 s, 2.5 x 200 ms) = 1 s.
-  std::vector<std::int64_t> fixes;
-  for (std::int64_t t = 0; t <= 20'000 * kMs; t += 200 * kMs) {
-    if (t < 5000 * kMs || t > 15'000 * kMs) fixes.push_back(t);
+  // Added out of order (a late fix), as the fusion run may report them.
+  ExternalSort<std::int64_t> fixes(8);
+  for (std::int64_t t = 20'000 * kMs; t >= 0; t -= 200 * kMs) {
+    if (t < 5000 * kMs || t > 15'000 * kMs) fixes.add(t);
   }
-  const std::int64_t age = max_fix_age_ns(fixes);
-  EXPECT_EQ(age, 1000 * kMs);
-  EXPECT_FALSE(in_gnss_outage(fixes, 5500 * kMs, age));
-  EXPECT_TRUE(in_gnss_outage(fixes, 6100 * kMs, age));
-  EXPECT_FALSE(in_gnss_outage(fixes, 15'300 * kMs, age));
-  EXPECT_TRUE(in_gnss_outage(fixes, -1, age));
+  GnssOutageDetector outage(fixes);
+  EXPECT_EQ(outage.max_fix_age_ns(), 1000 * kMs);
+  EXPECT_TRUE(outage.at(-1));
+  EXPECT_FALSE(outage.at(5500 * kMs));
+  EXPECT_TRUE(outage.at(6100 * kMs));
+  EXPECT_FALSE(outage.at(15'300 * kMs));
+  EXPECT_FALSE(outage.at(4000 * kMs));  // back in time
+
+  // 0.5 Hz fixes: the age limit is 2.5 x the median interval, 5 s.
+  ExternalSort<std::int64_t> slow;
+  for (std::int64_t t = 0; t <= 60'000 * kMs; t += 2000 * kMs) slow.add(t);
+  EXPECT_EQ(GnssOutageDetector(slow).max_fix_age_ns(), 5000 * kMs);
 }
 
 }  // namespace

@@ -23,10 +23,10 @@ TrackSample sample(std::int64_t t_ns, double yaw_deg) {
   return s;
 }
 
-std::vector<const TrackSample*> view(const std::vector<TrackSample>& v) {
-  std::vector<const TrackSample*> out;
-  for (const auto& s : v) out.push_back(&s);
-  return out;
+SolutionTrack track_of(const std::vector<TrackSample>& v) {
+  SolutionTrack track;
+  for (const auto& s : v) track.append(s);
+  return track;
 }
 
 TEST(TimeAlignment, InterpolatesLinearlyBetweenNeighbours) {
@@ -35,7 +35,8 @@ TEST(TimeAlignment, InterpolatesLinearlyBetweenNeighbours) {
   v[1].vel_ned_mps = {2.0, -4.0, 1.0};
   v[1].lat_rad = 0.5 + 1e-6;
   v[1].pos_std_ned_m = {1.0, 1.0, 2.0};
-  const TrackInterpolator track(view(v), 200 * kMs);
+  const SolutionTrack samples = track_of(v);
+  TrackInterpolator track(samples.with_any(), 200 * kMs);
   const auto s = track.at(25 * kMs);
   ASSERT_TRUE(s);
   EXPECT_EQ(s->time_ns, 25 * kMs);
@@ -49,7 +50,8 @@ TEST(TimeAlignment, InterpolatesLinearlyBetweenNeighbours) {
 TEST(TimeAlignment, HeadingTakesTheShorterArcThroughPlusMinus180) {
   // 179 deg -> -179 deg is 2 deg of turn through 180, so the midpoint is +-180, not 0.
   std::vector<TrackSample> v = {sample(0, 179.0), sample(10 * kMs, -179.0)};
-  const TrackInterpolator track(view(v), 100 * kMs);
+  const SolutionTrack samples = track_of(v);
+  TrackInterpolator track(samples.with_any(), 100 * kMs);
   const auto mid = track.at(5 * kMs);
   ASSERT_TRUE(mid);
   EXPECT_NEAR(std::abs(mid->rpy_rad.z()), 180.0 * kDeg, 1e-9);
@@ -65,7 +67,8 @@ TEST(TimeAlignment, LongitudeTakesTheShorterArcAcrossTheAntimeridian) {
   std::vector<TrackSample> v = {sample(0, 0.0), sample(10 * kMs, 0.0)};
   v[0].lon_rad = rot::kPi - 1e-6;
   v[1].lon_rad = -rot::kPi + 1e-6;
-  const TrackInterpolator track(view(v), 100 * kMs);
+  const SolutionTrack samples = track_of(v);
+  TrackInterpolator track(samples.with_any(), 100 * kMs);
   const auto mid = track.at(5 * kMs);
   ASSERT_TRUE(mid);
   EXPECT_NEAR(std::abs(mid->lon_rad), rot::kPi, 1e-12);
@@ -74,7 +77,8 @@ TEST(TimeAlignment, LongitudeTakesTheShorterArcAcrossTheAntimeridian) {
 TEST(TimeAlignment, ExactTimesReturnTheSampleItself) {
   std::vector<TrackSample> v = {sample(0, 1.0), sample(10 * kMs, 2.0), sample(20 * kMs, 3.0)};
   v[1].mode = NavMode::kDeadReckoning;
-  const TrackInterpolator track(view(v), 15 * kMs);
+  const SolutionTrack samples = track_of(v);
+  TrackInterpolator track(samples.with_any(), 15 * kMs);
   TrackInterpolator::Miss miss = TrackInterpolator::Miss::kGap;
   const auto s = track.at(10 * kMs, &miss);
   ASSERT_TRUE(s);
@@ -87,14 +91,16 @@ TEST(TimeAlignment, ExactTimesReturnTheSampleItself) {
 
 TEST(TimeAlignment, NeverExtrapolatesBeforeOrAfterTheTrack) {
   std::vector<TrackSample> v = {sample(100 * kMs, 1.0), sample(110 * kMs, 2.0)};
-  const TrackInterpolator track(view(v), 1000 * kMs);
+  const SolutionTrack samples = track_of(v);
+  TrackInterpolator track(samples.with_any(), 1000 * kMs);
   TrackInterpolator::Miss miss = TrackInterpolator::Miss::kNone;
   EXPECT_FALSE(track.at(99 * kMs, &miss));
   EXPECT_EQ(miss, TrackInterpolator::Miss::kOutside);
   miss = TrackInterpolator::Miss::kNone;
   EXPECT_FALSE(track.at(111 * kMs, &miss));
   EXPECT_EQ(miss, TrackInterpolator::Miss::kOutside);
-  const TrackInterpolator empty({}, 1000 * kMs);
+  const SolutionTrack none;
+  TrackInterpolator empty(none.with_any(), 1000 * kMs);
   EXPECT_FALSE(empty.at(0, &miss));
 }
 
@@ -103,10 +109,11 @@ TEST(TimeAlignment, NeverBridgesAGap) {
   std::vector<TrackSample> v;
   for (int i = 0; i <= 10; ++i) v.push_back(sample(i * 100 * kMs, 0.0));
   for (int i = 20; i <= 30; ++i) v.push_back(sample(i * 100 * kMs, 0.0));
-  const auto samples = view(v);
+  const SolutionTrack dropout = track_of(v);
+  const TrackView samples = dropout.with_any();
   EXPECT_EQ(median_interval_ns(samples), 100 * kMs);
   EXPECT_EQ(default_max_gap_ns(samples), 300 * kMs);
-  const TrackInterpolator track(samples, default_max_gap_ns(samples));
+  TrackInterpolator track(samples, default_max_gap_ns(samples));
   TrackInterpolator::Miss miss = TrackInterpolator::Miss::kNone;
   EXPECT_FALSE(track.at(1500 * kMs, &miss));
   EXPECT_EQ(miss, TrackInterpolator::Miss::kGap);
@@ -115,9 +122,14 @@ TEST(TimeAlignment, NeverBridgesAGap) {
   EXPECT_TRUE(track.at(2000 * kMs));
   // One lost message (200 ms between neighbours) is bridged.
   v.erase(v.begin() + 5);
-  const auto fewer = view(v);
-  const TrackInterpolator tolerant(fewer, default_max_gap_ns(fewer));
+  const SolutionTrack one_lost = track_of(v);
+  const TrackView fewer = one_lost.with_any();
+  TrackInterpolator tolerant(fewer, default_max_gap_ns(fewer));
   EXPECT_TRUE(tolerant.at(500 * kMs));
+  // Asked out of order, the interpolator starts its pass again and still answers.
+  EXPECT_TRUE(track.at(1000 * kMs));
+  EXPECT_FALSE(track.at(1500 * kMs, &miss));
+  EXPECT_EQ(miss, TrackInterpolator::Miss::kGap);
 }
 
 TEST(SolutionTrack, MergesPartialSolutionsOfOneEpochAndDropsReorderedOnes) {
@@ -131,7 +143,9 @@ TEST(SolutionTrack, MergesPartialSolutionsOfOneEpochAndDropsReorderedOnes) {
   EXPECT_TRUE(track.append(pos));
   EXPECT_TRUE(track.append(att));
   ASSERT_EQ(track.size(), 1u);
-  const TrackSample& s = track.samples().front();
+  SolutionTrack::Reader reader = track.reader();
+  TrackSample s;
+  ASSERT_TRUE(reader.next(s));
   EXPECT_TRUE(has(s, Quantity::kPosition));
   EXPECT_TRUE(has(s, Quantity::kHeading));
   EXPECT_FALSE(has(s, Quantity::kVelocity));
@@ -141,6 +155,7 @@ TEST(SolutionTrack, MergesPartialSolutionsOfOneEpochAndDropsReorderedOnes) {
   EXPECT_EQ(track.dropped(), 1u);
   EXPECT_EQ(track.with(Quantity::kVelocity, false).size(), 0u);
   EXPECT_EQ(track.with_any().size(), 1u);
+  EXPECT_EQ(track.with_any().first_ns(), 10 * kMs);
 }
 
 }  // namespace
