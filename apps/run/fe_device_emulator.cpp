@@ -56,8 +56,8 @@ void config_changes_to_actions(const config::Config& before, const config::Confi
 
 }  // namespace
 
-FeDeviceEmulator::FeDeviceEmulator(const config::Config& config)
-    : config_(config), control_(config, FeDeviceStatus::versions()), status_(config) {}
+FeDeviceEmulator::FeDeviceEmulator(const config::Config& config, bool device_link)
+    : config_(config), control_(config, FeDeviceStatus::versions()), device_link_(device_link), status_(config) {}
 
 void FeDeviceEmulator::stream(const OutputEpoch& epoch, std::vector<std::uint8_t>& out) {
   last_ = epoch;
@@ -65,6 +65,7 @@ void FeDeviceEmulator::stream(const OutputEpoch& epoch, std::vector<std::uint8_t
   const NavSolution& s = epoch.solution;
   status_.update(s);
   encoder_.append(epoch, out);
+  if (!device_link_) return;
   auto& writer = encoder_.writer();
   for (auto& e : pending_events_) writer.append(std::move(e), out);
   pending_events_.clear();
@@ -183,8 +184,8 @@ void FeDeviceEmulator::handle(const fe::Frame& frame, std::vector<std::uint8_t>&
   }
 }
 
-std::unique_ptr<DeviceEmulator> make_fe_device_emulator(const config::Config& config) {
-  return std::make_unique<FeDeviceEmulator>(config);
+std::unique_ptr<DeviceEmulator> make_fe_device_emulator(const config::Config& config, bool device_link) {
+  return std::make_unique<FeDeviceEmulator>(config, device_link);
 }
 
 }  // namespace navfuse::apps

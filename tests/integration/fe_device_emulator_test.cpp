@@ -144,6 +144,15 @@ TEST(FeDeviceEmulator, StreamsWhatTheFileEncoderWritesAtDefaultRates) {
   // All 8 epochs are within one second: one of each status message, at the first.
   EXPECT_EQ(link.count(fe::MessageType::kCalibrationStatus), 1u);
   EXPECT_EQ(link.count(fe::MessageType::kSystemStatus), 1u);
+  // On a file output of run: byte for byte what replay writes.
+  auto file_link = make_fe_device_emulator(config::Config{}, false);
+  FeEpochEncoder again;
+  std::vector<std::uint8_t> from_run, from_replay;
+  for (int k = 0; k < 30; ++k) {
+    file_link->stream(epoch_at(k), from_run);
+    again.append(epoch_at(k), from_replay);
+  }
+  EXPECT_EQ(from_run, from_replay);
 }
 
 TEST(FeDeviceEmulator, StatusMessagesAtOneHertzUntilAClientTurnsThemOff) {
