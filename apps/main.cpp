@@ -12,6 +12,7 @@
 #include "apps/decode/decode_command.hpp"
 #include "apps/replay/calibration_hook.hpp"
 #include "apps/replay/replay_command.hpp"
+#include "apps/run/build_info.hpp"
 #include "apps/run/run_command.hpp"
 #include "apps/simcmd/sim_command.hpp"
 #include "calibration/calibration_problem.hpp"
@@ -22,7 +23,7 @@ int main(int argc, char** argv) {
   std::signal(SIGPIPE, SIG_IGN);
   CLI::App app{"navfuse: loosely-coupled GNSS/INS fusion engine"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "navfuse 0.1.0");
+  app.set_version_flag("--version", "navfuse " + std::string(navfuse::apps::navfuse_version()));
   int exit_code = 0;
   // The Ceres calibration behind `smooth --calibration-out` (apps/replay/calibration_hook.hpp).
   navfuse::apps::set_calibration_solver([](const navfuse::calib::CalibrationLog& log) { return navfuse::calib::calibrate(log); });

@@ -6,7 +6,12 @@ using frontends::fusionengine::MessageRate;
 using frontends::fusionengine::MessageType;
 
 FeStreamRates::FeStreamRates()
-    : entries_{{{MessageType::kPose}, {MessageType::kPoseAux}, {MessageType::kGnssInfo}, {MessageType::kImuOutput}}} {}
+    : entries_{{{MessageType::kPose},
+                {MessageType::kPoseAux},
+                {MessageType::kGnssInfo},
+                {MessageType::kImuOutput},
+                {MessageType::kCalibrationStatus},
+                {MessageType::kSystemStatus}}} {}
 
 FeStreamRates::Entry* FeStreamRates::find(MessageType type) {
   for (Entry& e : entries_) {

@@ -1,7 +1,8 @@
 // The FusionEngine messages navfuse streams (Pose 10000, PoseAux 10003, GNSSInfo 10001,
-// IMUOutput 11000) with the rate each goes out at. All start at "default", which is the
-// DESIGN.md --fe-out contract; a device-emulating link lets clients change them with
-// SetMessageRate (spec L1419-1440), a file keeps the defaults.
+// IMUOutput 11000; and on a device-emulating link CalibrationStatus 10004 and SystemStatus
+// 10500) with the rate each goes out at. All start at "default", which is the DESIGN.md
+// --fe-out contract; a device-emulating link lets clients change them with SetMessageRate
+// (spec L1419-1440), a file keeps the defaults.
 #pragma once
 
 #include <array>
@@ -27,11 +28,11 @@ class FeStreamRates {
   // Whether `type` goes out at this epoch. `default_due` is when it would at its default rate,
   // `on_change` whether its content changed since it last went out.
   bool due(frontends::fusionengine::MessageType type, std::int64_t time_ns, bool default_due, bool on_change);
-  const std::array<Entry, 4>& entries() const { return entries_; }
+  const std::array<Entry, 6>& entries() const { return entries_; }
 
  private:
   Entry* find(frontends::fusionengine::MessageType type);
-  std::array<Entry, 4> entries_;
+  std::array<Entry, 6> entries_;
 };
 
 }  // namespace navfuse::apps

@@ -1,5 +1,6 @@
 #include "apps/run/fe_device_emulator.hpp"
 
+#include "apps/run/arrived_measurement.hpp"
 #include "core/rotation/rotation.hpp"
 #include "filter/engine.hpp"
 #include "frontends/fusionengine/payload_reader.hpp"
@@ -55,12 +56,27 @@ void config_changes_to_actions(const config::Config& before, const config::Confi
 
 }  // namespace
 
-FeDeviceEmulator::FeDeviceEmulator(const config::Config& config) : config_(config), control_(config) {}
+FeDeviceEmulator::FeDeviceEmulator(const config::Config& config, bool device_link)
+    : config_(config), control_(config, FeDeviceStatus::versions()), device_link_(device_link), status_(config) {}
 
 void FeDeviceEmulator::stream(const OutputEpoch& epoch, std::vector<std::uint8_t>& out) {
   last_ = epoch;
   have_last_ = true;
+  const NavSolution& s = epoch.solution;
+  status_.update(s);
   encoder_.append(epoch, out);
+  if (!device_link_) return;
+  auto& writer = encoder_.writer();
+  for (auto& e : pending_events_) writer.append(std::move(e), out);
+  pending_events_.clear();
+  // Both interval clocks run every epoch so that a default rate restored later stays on its grid.
+  const std::int64_t t = s.header.time_ns;
+  const bool calibration_default = calibration_default_.due(t);
+  const bool system_default = system_default_.due(t);
+  if (encoder_.rates().due(MessageType::kCalibrationStatus, t, calibration_default, true)) {
+    writer.append(status_.calibration(s), out);
+  }
+  if (encoder_.rates().due(MessageType::kSystemStatus, t, system_default, true)) writer.append(status_.system(s), out);
 }
 
 fe::Framer& FeDeviceEmulator::framer_for(io::PeerId peer) {
@@ -114,12 +130,19 @@ void FeDeviceEmulator::handle(const fe::Frame& frame, std::vector<std::uint8_t>&
     case MessageType::kMessageRequest: {
       fe::MessageRequestMessage m;
       if (!parse(frame, m)) return answer(fe::Response::kInconsistentPayloadLength);
+      if (m.message_type == fe::to_u16(MessageType::kVersionInfo)) {
+        control_.respond(frame, encoder_.writer(), reply);
+        return;
+      }
       if (!have_last_) return answer(fe::Response::kNoDataStored);
       const NavSolution& s = last_.solution;
+      auto& writer = encoder_.writer();
       switch (static_cast<MessageType>(m.message_type)) {
-        case MessageType::kPose: encoder_.writer().append(fe::pose_from(s), reply); return;
-        case MessageType::kPoseAux: encoder_.writer().append(fe::pose_aux_from(s), reply); return;
-        case MessageType::kGnssInfo: encoder_.writer().append(fe::gnss_info_from(s, last_.num_sats), reply); return;
+        case MessageType::kPose: writer.append(fe::pose_from(s), reply); return;
+        case MessageType::kPoseAux: writer.append(fe::pose_aux_from(s), reply); return;
+        case MessageType::kGnssInfo: writer.append(fe::gnss_info_from(s, last_.num_sats), reply); return;
+        case MessageType::kCalibrationStatus: writer.append(status_.calibration(s), reply); return;
+        case MessageType::kSystemStatus: writer.append(status_.system(s), reply); return;
         default: return answer(fe::Response::kUnsupportedFeature);
       }
     }
@@ -127,15 +150,25 @@ void FeDeviceEmulator::handle(const fe::Frame& frame, std::vector<std::uint8_t>&
       fe::ResetRequestMessage m;
       if (!parse(frame, m)) return answer(fe::Response::kInconsistentPayloadLength);
       const std::uint32_t mask = engine_reset_mask(m.reset_mask);
-      if (mask != 0) effects.actions.push_back(EngineAction::reset(mask));
+      if (mask != 0) {
+        effects.actions.push_back(EngineAction::reset(mask));
+        // "The event flags will be set to the requested reset bitmask" (L2639).
+        pending_events_.push_back(FeDeviceStatus::event(fe::EventType::kReset, m.reset_mask,
+                                                        "ResetRequest from a client", monotonic_ns()));
+      }
       return answer(fe::Response::kOk);
     }
     case MessageType::kSetConfig:
     case MessageType::kGetConfig:
     case MessageType::kSaveConfig: {
       const config::Config before = control_.config();
-      control_.feed(frame.bytes, reply);
+      const std::uint64_t changes = control_.config_changes();
+      control_.respond(frame, encoder_.writer(), reply);
       config_changes_to_actions(before, control_.config(), effects);
+      if (control_.config_changes() != changes) {
+        pending_events_.push_back(FeDeviceStatus::event(fe::EventType::kConfigChange, 0,
+                                                        "configuration changed by a client", monotonic_ns()));
+      }
       return;
     }
     case MessageType::kShutdownRequest:
@@ -151,8 +184,8 @@ void FeDeviceEmulator::handle(const fe::Frame& frame, std::vector<std::uint8_t>&
   }
 }
 
-std::unique_ptr<DeviceEmulator> make_fe_device_emulator(const config::Config& config) {
-  return std::make_unique<FeDeviceEmulator>(config);
+std::unique_ptr<DeviceEmulator> make_fe_device_emulator(const config::Config& config, bool device_link) {
+  return std::make_unique<FeDeviceEmulator>(config, device_link);
 }
 
 }  // namespace navfuse::apps

@@ -1,7 +1,14 @@
 // --fe-out: navfuse as a Point One FusionEngine device on the link. Streams what replay's
-// --fe-out file holds (apps/output/fe_epoch_encoder.hpp: IMUOutput, Pose, PoseAux, GNSSInfo),
-// each message at the rate a client set with SetMessageRate; and answers the device's commands
-// on the same link (configuration commands through frontends/fusionengine/device_control).
+// --fe-out file holds (apps/output/fe_epoch_encoder.hpp: IMUOutput, Pose, PoseAux, GNSSInfo)
+// and, as a device does, CalibrationStatus and SystemStatus (1 s by default, the device
+// defaults of frontends/fusionengine/responder.cpp) and EventNotifications for the resets and
+// configuration changes its clients cause (apps/run/fe_device_status.hpp); each message at the
+// rate a client set with SetMessageRate. It answers the device's commands on the same link
+// (configuration commands and VersionInfo through frontends/fusionengine/responder.hpp). All of
+// it, responses included, carries one sequence counter (spec L190: the stream's).
+// On a file (run --fe-out file:F) nobody can send a command or hear about the device: the
+// stream is then exactly what replay writes to its --fe-out file (run --record, then replay,
+// gives the same bytes), without the status messages.
 #pragma once
 
 #include <map>
@@ -9,6 +16,7 @@
 
 #include "apps/output/fe_epoch_encoder.hpp"
 #include "apps/run/device_emulator.hpp"
+#include "apps/run/fe_device_status.hpp"
 #include "core/config/config.hpp"
 #include "frontends/fusionengine/framer.hpp"
 #include "frontends/fusionengine/messages_control.hpp"
@@ -18,7 +26,8 @@ namespace navfuse::apps {
 
 class FeDeviceEmulator final : public DeviceEmulator {
  public:
-  explicit FeDeviceEmulator(const config::Config& config);
+  // `device_link`: a link a client talks on (serial, TCP, UDP), not a file.
+  FeDeviceEmulator(const config::Config& config, bool device_link);
   std::string_view protocol() const override { return "fe"; }
   void stream(const OutputEpoch& epoch, std::vector<std::uint8_t>& out) override;
   void receive(io::PeerId peer, std::span<const std::uint8_t> bytes, std::vector<std::uint8_t>& reply,
@@ -36,8 +45,13 @@ class FeDeviceEmulator final : public DeviceEmulator {
   std::map<io::PeerId, std::unique_ptr<frontends::fusionengine::Framer>> framers_;
   OutputEpoch last_;  // for MessageRequest: the newest solution
   bool have_last_ = false;
+  bool device_link_;
+  FeDeviceStatus status_;
+  OutputRate calibration_default_{1.0}, system_default_{1.0};  // Hz, the device defaults
+  // Events of the commands since the last epoch: they go to every client, with the stream.
+  std::vector<frontends::fusionengine::EventNotificationMessage> pending_events_;
 };
 
-std::unique_ptr<DeviceEmulator> make_fe_device_emulator(const config::Config& config);
+std::unique_ptr<DeviceEmulator> make_fe_device_emulator(const config::Config& config, bool device_link = true);
 
 }  // namespace navfuse::apps

@@ -2,8 +2,11 @@
 // data set 0x82 at each pose, apps/output/mip_epoch_encoder.hpp) unless a client disabled that
 // stream or set the device idle, and answers MIP commands as the CV7 does (frontends/mip/responder.hpp):
 // external aiding (0x13) is handed to the filter, and the filter commands with an effect on the
-// estimate — reset (0x0D,0x01), sensor-to-vehicle rotation (0x0C,0x31), antenna offsets
-// (0x0D,0x54) — are applied to the engine as well as being acknowledged.
+// estimate — reset (0x0D,0x01), sensor-to-vehicle rotation (0x0C,0x31/0x32/0x33), antenna
+// offsets (0x0D,0x13 and 0x0D,0x54), speed lever arm (0x0D,0x61) — are applied to the engine as
+// well as being acknowledged. The other filter-configuration and aiding commands the CV7
+// documents, which the engine cannot take at run time, are NACKed "command failed" (0x04) rather
+// than acknowledged and ignored (kRefused in the .cpp, issue 17).
 #pragma once
 
 #include <map>
@@ -20,6 +23,7 @@ namespace navfuse::apps {
 
 class MipDeviceEmulator final : public DeviceEmulator {
  public:
+  MipDeviceEmulator();
   std::string_view protocol() const override { return "mip"; }
   void stream(const OutputEpoch& epoch, std::vector<std::uint8_t>& out) override;
   void receive(io::PeerId peer, std::span<const std::uint8_t> bytes, std::vector<std::uint8_t>& reply,

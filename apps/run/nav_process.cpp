@@ -82,7 +82,8 @@ NavProcess::NavProcess(const RunOptions& options)
                                                     options_.configure_device, std::move(recorder), pacer_.get()));
   }
   if (!options_.fe_out.empty()) {
-    outputs_.push_back(std::make_unique<OutputSink>("--fe-out", fe_uri, make_fe_device_emulator(config_), queue_, actions_));
+    outputs_.push_back(std::make_unique<OutputSink>(
+        "--fe-out", fe_uri, make_fe_device_emulator(config_, fe_uri.scheme != io::Scheme::kFile), queue_, actions_));
   }
   if (!options_.mip_out.empty()) {
     outputs_.push_back(

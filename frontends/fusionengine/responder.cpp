@@ -109,7 +109,13 @@ const DeviceControl::State& DeviceControl::state_for(std::uint8_t source) const 
 }
 
 void DeviceControl::feed(std::span<const std::uint8_t> bytes, std::vector<std::uint8_t>& responses) {
-  framer_.feed(bytes, [&](const Frame& f) { on_frame(f, responses); });
+  framer_.feed(bytes, [&](const Frame& f) { respond(f, writer_, responses); });
+}
+
+void DeviceControl::respond(const Frame& frame, FusionEngineWriter& writer, std::vector<std::uint8_t>& out) {
+  const State before = active_;
+  on_frame(frame, writer, out);
+  if (!(active_ == before)) ++config_changes_;
 }
 
 std::optional<std::vector<std::uint8_t>> DeviceControl::config_value(const State& s, std::uint16_t type) const {
@@ -218,7 +224,8 @@ Response DeviceControl::set_message_rate(const SetMessageRateMessage& m) {
   return Response::kOk;
 }
 
-void DeviceControl::get_message_rate(const GetMessageRateMessage& m, std::vector<std::uint8_t>& out) {
+void DeviceControl::get_message_rate(const GetMessageRateMessage& m, FusionEngineWriter& writer,
+                                     std::vector<std::uint8_t>& out) {
   MessageRateResponseMessage resp;
   resp.source = m.source;
   resp.output_interface = m.output_interface;
@@ -240,12 +247,12 @@ void DeviceControl::get_message_rate(const GetMessageRateMessage& m, std::vector
     }
     resp.response = static_cast<std::uint8_t>(resp.rates.empty() ? Response::kValueError : Response::kOk);
   }
-  writer_.append(resp, out);
+  writer.append(resp, out);
 }
 
-void DeviceControl::on_frame(const Frame& f, std::vector<std::uint8_t>& out) {
+void DeviceControl::on_frame(const Frame& f, FusionEngineWriter& writer, std::vector<std::uint8_t>& out) {
   const std::uint32_t seq = f.header.sequence;
-  auto respond = [&](Response code) { writer_.append(CommandResponseMessage{seq, static_cast<std::uint8_t>(code)}, out); };
+  auto respond = [&](Response code) { writer.append(CommandResponseMessage{seq, static_cast<std::uint8_t>(code)}, out); };
   messages_.dispatch(f.header.message_type, [&](auto& msg) {
     using M = std::decay_t<decltype(msg)>;
     constexpr auto type = M::kType;
@@ -261,7 +268,7 @@ void DeviceControl::on_frame(const Frame& f, std::vector<std::uint8_t>& out) {
     } else {
       if (!decode_payload(f.payload, msg)) {
         if constexpr (type == MessageType::kGetConfig) {
-          writer_.append(ConfigResponseMessage{0, 0, 0, static_cast<std::uint8_t>(Response::kInconsistentPayloadLength), 0, {}}, out);
+          writer.append(ConfigResponseMessage{0, 0, 0, static_cast<std::uint8_t>(Response::kInconsistentPayloadLength), 0, {}}, out);
         } else {
           respond(Response::kInconsistentPayloadLength);
         }
@@ -280,7 +287,7 @@ void DeviceControl::on_frame(const Frame& f, std::vector<std::uint8_t>& out) {
         } else {
           resp.response = static_cast<std::uint8_t>(Response::kUnsupportedFeature);  // value omitted (L1615)
         }
-        writer_.append(resp, out);
+        writer.append(resp, out);
       } else if constexpr (type == MessageType::kSaveConfig) {
         switch (static_cast<SaveAction>(msg.action)) {
           case SaveAction::kSave: saved_ = active_; break;
@@ -293,7 +300,7 @@ void DeviceControl::on_frame(const Frame& f, std::vector<std::uint8_t>& out) {
       } else if constexpr (type == MessageType::kSetMessageRate) {
         respond(set_message_rate(msg));
       } else if constexpr (type == MessageType::kGetMessageRate) {
-        get_message_rate(msg, out);
+        get_message_rate(msg, writer, out);
       } else if constexpr (type == MessageType::kResetRequest) {
         reset_request_ = msg.reset_mask;
         if ((msg.reset_mask & reset::kResetConfig) != 0) active_ = saved_ = default_;
@@ -305,7 +312,7 @@ void DeviceControl::on_frame(const Frame& f, std::vector<std::uint8_t>& out) {
           v.engine_version = versions_.engine;
           v.os_version = versions_.os;
           v.rx_version = versions_.receiver;
-          writer_.append(v, out);
+          writer.append(v, out);
         } else {
           respond(Response::kValueError);  // "If the type cannot be requested" (L705)
         }

@@ -48,8 +48,13 @@ class DeviceControl {
  public:
   explicit DeviceControl(const config::Config& config, VersionStrings versions = {});
 
-  // Feeds command bytes (any chunking) and appends the response frames to `responses`.
+  // Feeds command bytes (any chunking) and appends the response frames to `responses`, framed
+  // by this handler's own writer (a stream of nothing but responses).
   void feed(std::span<const std::uint8_t> bytes, std::vector<std::uint8_t>& responses);
+  // Answers one framed command with `writer`, the writer of the stream the answer goes out on:
+  // "A sequence number that is incremented with each message" (spec L190) is one counter per
+  // stream, so a device link's responses must not carry a second counter beside its outputs'.
+  void respond(const Frame& frame, FusionEngineWriter& writer, std::vector<std::uint8_t>& out);
 
   const config::Config& config() const { return active_.config; }
   // Active rate of an output message (kOff for a message navfuse does not output).
@@ -62,6 +67,9 @@ class DeviceControl {
     return m;
   }
   const frontends::StreamCounters& counters() const { return framer_.counters(); }
+  // Counts the commands that changed the active configuration (lever arms, orientation, vehicle,
+  // wheel config; rates aside), for CONFIG_CHANGE event notifications (spec L2640).
+  std::uint64_t config_changes() const { return config_changes_; }
 
  private:
   // Everything a SetConfig / SetMessageRate changes; three copies: active, saved, default.
@@ -75,17 +83,18 @@ class DeviceControl {
     bool operator==(const State&) const;
   };
 
-  void on_frame(const Frame& f, std::vector<std::uint8_t>& out);
+  void on_frame(const Frame& f, FusionEngineWriter& writer, std::vector<std::uint8_t>& out);
   Response set_config(const SetConfigMessage& m);
   std::optional<std::vector<std::uint8_t>> config_value(const State& s, std::uint16_t type) const;
   Response apply_config_value(State& s, std::uint16_t type, std::span<const std::uint8_t> value) const;
   Response set_message_rate(const SetMessageRateMessage& m);
-  void get_message_rate(const GetMessageRateMessage& m, std::vector<std::uint8_t>& out);
+  void get_message_rate(const GetMessageRateMessage& m, FusionEngineWriter& writer, std::vector<std::uint8_t>& out);
   const State& state_for(std::uint8_t source) const;
 
   State active_, saved_, default_;
   VersionStrings versions_;
   std::optional<std::uint32_t> reset_request_;
+  std::uint64_t config_changes_ = 0;
   Framer framer_;
   MessageSet messages_;
   FusionEngineWriter writer_;

@@ -1,8 +1,11 @@
 #include "frontends/mip/responder.hpp"
 
+#include <algorithm>
+
 #include "core/bytes/checks.hpp"
 #include "frontends/mip/field_schema.hpp"
 #include "frontends/mip/packet.hpp"
+#include "frontends/mip/sensor_to_vehicle.hpp"
 #include "frontends/mip/writer.hpp"
 
 namespace navfuse::frontends::mip {
@@ -26,6 +29,8 @@ constexpr ResponseMap kResponses[] = {
     {0x0D, 0x61, 0xE1}, {0x0D, 0x63, 0xE3}, {0x0D, 0x64, 0xE4}, {0x0E, 0x01, 0x81}, {0x0E, 0x02, 0x82},
     {0x0E, 0x20, 0xA0},
 };
+
+constexpr std::uint8_t kSpeedLeverArm = 0x61;  // (0x0D,0x61)
 
 int response_desc(std::uint8_t s, std::uint8_t cmd) {
   for (const auto& r : kResponses)
@@ -109,6 +114,10 @@ ReplyCode CommandResponder::handle_command(std::uint8_t desc_set, std::uint8_t d
     for (const auto& c : command_schemas()) set_known |= c.set == desc_set;
     return set_known ? ReplyCode::kUnknownCommand : ReplyCode::kUnknownDescriptorSet;
   }
+  const bool refused = std::find(refused_.begin(), refused_.end(), std::pair{desc_set, desc}) != refused_.end();
+  if (refused && (!s->has_function || (!data.empty() && data[0] == static_cast<std::uint8_t>(Function::kWrite)))) {
+    return ReplyCode::kCommandFailed;
+  }
   bytes::BeWriter out(response);
   const int resp = response_desc(desc_set, desc);
   if (desc_set == set::kBase) {
@@ -171,6 +180,12 @@ ReplyCode CommandResponder::handle_command(std::uint8_t desc_set, std::uint8_t d
       std::size_t group = 0;
       const std::size_t fixed = fixed_size(*s, &group);
       if (data.size() < fixed || (group > 0 && (data.size() - fixed) % group != 0)) return ReplyCode::kInvalidParameter;
+      if (desc_set == set::k3dm && (desc == kSensorToVehicleQuaternion || desc == kSensorToVehicleDcm) &&
+          !sensor_to_vehicle_dcm(desc, data.subspan(1))) {
+        return ReplyCode::kInvalidParameter;
+      }
+      // Speed measurement lever arm: "source ... reserved, must be 1" (digest §6.15, L8688).
+      if (desc_set == set::kFilterCmd && desc == kSpeedLeverArm && data[1] != 1) return ReplyCode::kInvalidParameter;
       settings_[key].assign(data.begin() + 1 + static_cast<std::ptrdiff_t>(key_bytes), data.end());
       if (desc_set == set::k3dm && desc == kStreamControl && data.size() >= 3) streams_[data[1]] = data[2] != 0;
       return ReplyCode::kAck;

@@ -7,12 +7,16 @@
 // (zeros before any write), Default forgets, Save/Load are acknowledged. Aiding (0x13) goes to an
 // AidingCommandHandler whose measurements are handed back. Unknown descriptors are NACKed
 // "unknown command", a bad checksum "bad checksum", a set without commands "unknown descriptor set".
+// A sensor-to-vehicle quaternion or DCM that is no rotation is NACKed "invalid parameter"
+// (frontends/mip/sensor_to_vehicle.hpp). Commands the owner cannot carry out (refuse()) are
+// NACKed "command failed" rather than acknowledged and ignored.
 #pragma once
 
 #include <cstdint>
 #include <map>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/measurements/measurements.hpp"
@@ -37,6 +41,11 @@ class CommandResponder {
   void handle_packet(std::span<const std::uint8_t> packet, std::vector<std::uint8_t>& reply,
                      std::vector<Measurement>& aiding, std::int64_t arrival_gps_ns = 0);
 
+  // (set, descriptor) of documented commands the device cannot carry out: a Write of such a
+  // setting, or such an action, is answered "command failed" (0x04, digest L8873-8881); Read,
+  // Save, Load and Default still work (they change nothing the device does).
+  void refuse(std::vector<std::pair<std::uint8_t, std::uint8_t>> commands) { refused_ = std::move(commands); }
+
   bool idle() const { return idle_; }
   // Stream control (0x0C,0x11); all streams are enabled by default (L6898-6913).
   bool stream_enabled(std::uint8_t data_set) const;
@@ -53,6 +62,7 @@ class CommandResponder {
   // Key: set, descriptor and up to 4 key-parameter bytes packed in an integer. Value: the
   // written parameters after the key.
   std::map<std::uint64_t, std::vector<std::uint8_t>> settings_;
+  std::vector<std::pair<std::uint8_t, std::uint8_t>> refused_;
 };
 
 }  // namespace navfuse::frontends::mip

@@ -30,6 +30,20 @@ class FeClient {
     std::vector<std::int64_t> pose_times_ns;  // p1_time of every Pose, in arrival order
     std::vector<frontends::fusionengine::CommandResponseMessage> responses;
     std::uint64_t frames = 0;
+    // Header sequence number of every frame, in arrival order.
+    std::vector<std::uint32_t> sequences;
+    // Type and payload of every frame other than the solution stream (Pose, PoseAux, GNSSInfo,
+    // IMUOutput): status, version, events, command responses.
+    struct Other {
+      std::uint16_t type = 0;
+      std::vector<std::uint8_t> payload;
+    };
+    std::vector<Other> others;
+    std::size_t count(frontends::fusionengine::MessageType type) const {
+      std::size_t n = 0;
+      for (const auto& o : others) n += o.type == frontends::fusionengine::to_u16(type) ? 1 : 0;
+      return n;
+    }
   };
 
   // Connects to 127.0.0.1:port, retrying up to timeout_ms while the listener comes up.
@@ -73,6 +87,8 @@ class FeClient {
       std::lock_guard lock(mutex_);
       framer_.feed(std::span<const std::uint8_t>(buf.data(), static_cast<std::size_t>(n)), [&](const frontends::fusionengine::Frame& f) {
         ++received_.frames;
+        received_.sequences.push_back(f.header.sequence);
+        keep_other(f);
         frontends::fusionengine::PayloadReader r(f.payload);
         if (f.header.message_type == frontends::fusionengine::to_u16(frontends::fusionengine::MessageType::kPose)) {
           frontends::fusionengine::PoseMessage m;
@@ -84,6 +100,17 @@ class FeClient {
           if (r.ok()) received_.responses.push_back(m);
         }
       });
+    }
+  }
+
+  void keep_other(const frontends::fusionengine::Frame& f) {
+    using frontends::fusionengine::MessageType;
+    switch (static_cast<MessageType>(f.header.message_type)) {
+      case MessageType::kPose:
+      case MessageType::kPoseAux:
+      case MessageType::kGnssInfo:
+      case MessageType::kImuOutput: return;
+      default: received_.others.push_back({f.header.message_type, {f.payload.begin(), f.payload.end()}});
     }
   }
 

@@ -1,6 +1,8 @@
 // The nav process's other ways in, end to end through the real binary:
 //  - MIP 0x13 external aiding sent on the --mip-out TCP connection is answered as a CV7 answers
-//    it (ACK per command) and reaches the filter on the IMU's time axis;
+//    it (ACK per command) and reaches the filter on the IMU's time axis; a filter command the
+//    engine takes (speed lever arm 0x0D,0x61) is ACKed, one it cannot (aiding control 0x0D,0x50)
+//    NACKed "command failed" (0x04, digest L8873-8881);
 //  - a measurement stamped on another device's clock (a Point One wheel-speed input on P1
 //    time, beside a VN-300 on GPS time) is rejected as "time_base", never fused.
 // The VN-300 input is the bundled demo log; a UDP input that never ends keeps the process
@@ -145,7 +147,7 @@ TEST_F(RunAidingTest, MipAidingOnTheOutputLinkIsAcknowledgedAndFused) {
       framer.feed(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), [&](const frontends::mip::PacketView& pkt) {
         if (pkt.desc_set == 0x82) decoder.on_packet(pkt, solutions);
         std::vector<frontends::mip::ReplyEntry> entries;
-        if (pkt.desc_set == 0x13 && frontends::mip::parse_reply(pkt.payload, entries)) {
+        if ((pkt.desc_set == 0x13 || pkt.desc_set == 0x0D) && frontends::mip::parse_reply(pkt.payload, entries)) {
           acks.insert(acks.end(), entries.begin(), entries.end());
         }
       });
@@ -170,6 +172,22 @@ TEST_F(RunAidingTest, MipAidingOnTheOutputLinkIsAcknowledgedAndFused) {
     EXPECT_EQ(a.cmd_desc, 0x22);
     EXPECT_EQ(a.code, frontends::mip::ReplyCode::kAck);
   }
+
+  // (0x0D,0x61) write, source 1, lever arm (0, 0.5, 0) m; (0x0D,0x50) write source 3 off.
+  acks.clear();
+  const std::vector<std::uint8_t> arm{0x01, 0x01, 0, 0, 0, 0, 0x3F, 0x00, 0x00, 0x00, 0, 0, 0, 0};
+  const std::vector<std::uint8_t> aiding_off{0x01, 0x00, 0x03, 0x00};
+  auto filter_commands = frontends::mip::make_packet(0x0D, 0x61, arm);
+  const auto off = frontends::mip::make_packet(0x0D, 0x50, aiding_off);
+  filter_commands.insert(filter_commands.end(), off.begin(), off.end());
+  ASSERT_EQ(::write(link.get(), filter_commands.data(), filter_commands.size()),
+            static_cast<ssize_t>(filter_commands.size()));
+  read_until([&] { return acks.size() >= 2; });
+  ASSERT_EQ(acks.size(), 2u);
+  EXPECT_EQ(acks[0].cmd_desc, 0x61);
+  EXPECT_EQ(acks[0].code, frontends::mip::ReplyCode::kAck);
+  EXPECT_EQ(acks[1].cmd_desc, 0x50);
+  EXPECT_EQ(acks[1].code, frontends::mip::ReplyCode::kCommandFailed);
 
   const auto j = stop(nav);
   const auto& ext = j["measurements"]["external_position"];

@@ -166,5 +166,31 @@ TEST(FeDeviceControl, MessageRatesResetAndVersion) {
   EXPECT_GT(v.frames[0].header.sequence, 0u);
 }
 
+// respond() frames its answers with the caller's writer: a device link numbers its responses in
+// its stream's sequence (spec L190), and only a change of the active configuration counts.
+TEST(FeDeviceControl, RespondUsesTheStreamsWriterAndCountsConfigChanges) {
+  DeviceControl dc(config::Config{});
+  FusionEngineWriter host, stream;
+  stream.set_next_sequence(41);
+  SetConfigMessage set;
+  set.config_type = to_u16(ConfigType::kGnssLeverArm);
+  set.value = pack_config(Point3f{{0.5f, 0.0f, 1.0f}});
+  std::vector<std::uint8_t> out;
+  const auto request = test::frames_of(host.frame(set));
+  ASSERT_EQ(request.size(), 1u);
+  dc.respond(request[0].view(), stream, out);
+  dc.respond(request[0].view(), stream, out);  // the same value again: no change
+  const auto frames = test::frames_of(out);
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_EQ(frames[0].header.sequence, 41u);
+  EXPECT_EQ(frames[1].header.sequence, 42u);
+  EXPECT_EQ(stream.next_sequence(), 43u);
+  EXPECT_EQ(dc.config_changes(), 1u);
+  GetConfigMessage get;
+  get.config_type = to_u16(ConfigType::kGnssLeverArm);
+  dc.respond(test::frames_of(host.frame(get))[0].view(), stream, out);
+  EXPECT_EQ(dc.config_changes(), 1u) << "a GetConfig changes nothing";
+}
+
 }  // namespace
 }  // namespace navfuse::frontends::fusionengine
