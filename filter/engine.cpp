@@ -251,6 +251,7 @@ const FilterStats& Engine::stats() const {
   stats_view_.resets = core_.mode.restarts;
   stats_view_.gnss_recoveries = core_.mode.gnss_recoveries;
   stats_view_.zupts = core_.mode.zupts;
+  stats_view_.accel_tilt_updates = core_.tilt.updates;
   stats_view_.nhc_updates = core_.mode.nhc_updates;
   stats_view_.covariance_inflations = core_.adaptation.inflations;
   stats_view_.process_noise_scale = core_.adaptation.process_noise_scale;

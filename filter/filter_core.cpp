@@ -7,6 +7,7 @@
 #include "filter/alignment.hpp"
 #include "filter/control/odometry_control.hpp"
 #include "filter/control/stationary_control.hpp"
+#include "filter/control/tilt_control.hpp"
 #include "filter/measurement_kinds.hpp"
 #include "filter/mode_machine.hpp"
 #include "filter/smoother/forward_record.hpp"
@@ -59,6 +60,7 @@ void FilterCore::restart(const FilterOptions& o) {
   odometry = OdometryState{};
   magnetometer = MagnetometerState{};
   baro = BaroState{};
+  tilt = TiltState{.window_time_s = 0.0, .sum_dvel = Eigen::Vector3d::Zero(), .updates = tilt.updates};
   const AdaptationState previous_adaptation = adaptation;
   adaptation = AdaptationState{};
   adaptation.inflations = previous_adaptation.inflations;  // counters survive restarts
@@ -108,6 +110,7 @@ bool FilterCore::propagate(const FilterOptions& o, const ImuIncrement& raw) {
 
 void FilterCore::apply_constraints(const FilterOptions& o, const ImuIncrement& raw) {
   update_stationary(*this, o, raw);
+  update_accel_tilt(*this, o, raw);
   apply_nonholonomic(*this, o);
   update_mode(*this, o);
   check_divergence(o);

@@ -119,6 +119,13 @@ struct BaroState {
   double anchor_std_m = 0.0;  // the filter's height std when anchored
 };
 
+// Accelerometer tilt aiding (control/tilt_control.cpp): the specific force of the current window.
+struct TiltState {
+  double window_time_s = 0.0;
+  Eigen::Vector3d sum_dvel = Eigen::Vector3d::Zero();  // raw, vehicle frame
+  std::uint64_t updates = 0;
+};
+
 struct ModeState {
   NavMode mode = NavMode::kInitializing;
   std::uint32_t reached_mask = 0;  // bit per NavMode value
@@ -155,6 +162,7 @@ struct FilterCore {
   AdaptationState adaptation;
   MagnetometerState magnetometer;
   BaroState baro;
+  TiltState tilt;
   ModeState mode;
   RecordHook record;  // forward-pass recording for the smoother; kept across restart()
 

@@ -65,10 +65,20 @@ struct BaroOptions {
   double height_std_m = 1.0;
 };
 
+// Accelerometer tilt aiding (control/tilt_control.hpp): gravity as the roll/pitch reference while
+// nothing observes velocity.
+struct AccelTiltOptions {
+  bool enabled = false;  // config: on for pedestrian and marine platforms
+  double std_mps2 = 0.5;            // the vehicle's own acceleration, as noise
+  double max_deviation_mps2 = 1.0;  // | |f| - g | beyond this: manoeuvring, not used
+  double window_s = 0.1;            // specific force averaged over this, one update per window
+};
+
 struct FilterOptions {
   ImuNoise imu;
   MagnetometerOptions magnetometer;
   BaroOptions baro;
+  AccelTiltOptions accel_tilt;
   AdaptationOptions adaptation;
   StateSelection states;
 

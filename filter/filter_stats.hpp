@@ -61,6 +61,7 @@ struct FilterStats {
   std::uint64_t gnss_recoveries = 0;  // re-anchored to GNSS after sustained rejection
   std::uint64_t replays = 0;          // late measurements fused by re-propagation
   std::uint64_t zupts = 0;           // zero-velocity updates applied
+  std::uint64_t accel_tilt_updates = 0;  // gravity-reference updates applied (control/tilt_control.hpp)
   std::uint64_t nhc_updates = 0;     // non-holonomic constraint updates applied
   std::uint64_t covariance_inflations = 0;  // over-confidence repaired (innovation_adaptation)
   double process_noise_scale = 1.0;         // current adaptive multiplier on the random walks

@@ -156,6 +156,17 @@ struct BaroConfig {
   std::optional<double> height_std_m;  // 1-sigma of the pressure height; unset: not fused
 };
 
+// Accelerometer tilt aiding (filter/control/tilt_control.hpp): gravity as the roll and pitch
+// reference while nothing observes velocity (no position, GNSS velocity, odometry or stop for
+// gnss.timeout_s), as an AHRS or vertical gyro does; the vehicle's own acceleration is its noise.
+// Unset `enabled`: on for pedestrian (handheld) and marine platforms, whose accelerations swing
+// about zero (steps, waves); a car's or an aircraft's last for seconds and would read as tilt.
+struct AccelTiltConfig {
+  std::optional<bool> enabled;
+  double std_mps2 = 0.5;            // the vehicle's own acceleration, as noise, 1 sigma
+  double max_deviation_mps2 = 1.0;  // | |f| - g | beyond this: manoeuvring, not used
+};
+
 struct OutputConfig {
   double rate_hz = 100;  // pose output rate (0 = every IMU sample)
 };
@@ -176,6 +187,7 @@ struct Config {
   AdaptationConfig adaptation;
   MagnetometerConfig magnetometer;
   BaroConfig baro;
+  AccelTiltConfig accel_tilt;
   OutputConfig output;
 };
 

@@ -187,6 +187,13 @@ const KeyBinding kKeys[] = {
                        "installation's constant field, subtracted, sensor frame (gauss)"),
     NAVFUSE_CONFIG_KEY(baro.height_std_m, kBaroStdM,
                        "pressure height noise, 1 sigma (m; ~: barometer not fused)"),
+    NAVFUSE_CONFIG_KEY(accel_tilt.enabled, kAny,
+                       "gravity as roll/pitch reference while nothing observes velocity (true | false; "
+                       "~: pedestrian and marine platforms)"),
+    NAVFUSE_CONFIG_KEY(accel_tilt.std_mps2, kAccelStdMps2,
+                       "the vehicle's own acceleration, taken as noise, 1 sigma (m/s^2)"),
+    NAVFUSE_CONFIG_KEY(accel_tilt.max_deviation_mps2, kAccelStdMps2,
+                       "| |specific force| - g | above this: manoeuvring, not used (m/s^2)"),
     NAVFUSE_CONFIG_KEY(output.rate_hz, kNonNegative, "pose output rate (Hz, 0 = every IMU sample)"),
 };
 

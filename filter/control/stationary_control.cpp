@@ -52,7 +52,16 @@ void update_stationary(FilterCore& c, const FilterOptions& o, const ImuIncrement
   s.sum_force_sq = 0.0;
   if (!s.stationary || !o.zero_velocity_updates) return;
 
-  if (c.apply(o, zero_velocity_observation(c.view(0.0), o.zupt_std_mps), o.chi2_gate[2]).used) {
+  const FuseResult zupt = c.apply(o, zero_velocity_observation(c.view(0.0), o.zupt_std_mps), o.chi2_gate[2]);
+  if (zupt.used) {
+    ++c.mode.zupts;
+  } else if (!c.navigating() && zupt.reason == RejectReason::kChi2Gate) {
+    // Without position or velocity aiding (vertical-gyro and AHRS modes) the velocity is integrated
+    // tilt error and noise: on the shared MicroStrain capture it reached 10 m/s within a minute of
+    // hand motion, and every later stop was rejected at the gate, leaving the tilt to drift. A stop
+    // is the first evidence of what the velocity is: restart it there, at the update's std.
+    c.x.vel_ned_mps.setZero();
+    c.ekf.reset_states(sx::kVel, 3, o.zupt_std_mps * o.zupt_std_mps);
     ++c.mode.zupts;
   }
   // The window mean of white rate noise has std ARW / sqrt(T); the bias random walk within the

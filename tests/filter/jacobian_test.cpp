@@ -31,6 +31,7 @@
 #include "filter/measurements/gnss_heading.hpp"
 #include "filter/measurements/gnss_position.hpp"
 #include "filter/measurements/gnss_velocity.hpp"
+#include "filter/measurements/gravity_vector.hpp"
 #include "filter/measurements/magnetic_heading.hpp"
 #include "filter/measurements/nonholonomic.hpp"
 #include "filter/measurements/wheel_speed.hpp"
@@ -267,6 +268,8 @@ std::vector<Model> models(const TestPoint& p) {
       {"nonholonomic", [=](const StateView& s) { return nonholonomic_observation(s, wheel_lever, 0.1, 0.1); },
        nhc_terms},
       {"zero_velocity", [](const StateView& s) { return zero_velocity_observation(s, 0.01); }, {}},
+      {"gravity_vector",
+       [=](const StateView& s) { return gravity_vector_observation(s, p.raw_force_mps2, 0.5); }, {}},
       {"zero_rate", [=](const StateView& s) { return zero_rate_observation(s, mean_raw_rate, 1e-4); },
        list(kZeroRateNeglected)},
   };
