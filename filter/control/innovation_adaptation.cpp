@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "filter/filter_core.hpp"
+#include "filter/smoother/forward_record.hpp"
 
 namespace navfuse::filter {
 
@@ -100,8 +102,20 @@ void adapt_to_innovation(FilterCore& c, const FilterOptions& o, InnovationWindow
   // 10 s outages.
   constexpr int kBlock = sx::kAtt;
   const int n = c.ekf.n;
+  std::optional<Covariance> before;
+  if (c.record.sink != nullptr) before = c.ekf.p;
   c.ekf.p.topRows(kBlock).leftCols(n) *= scale;
   c.ekf.p.leftCols(kBlock).topRows(n) *= scale;
+  if (before) {
+    // P <- D P D, D = diag(scale on position and velocity, 1): the error state mapped by D, a
+    // zero-length step with transition D and no noise. As process noise instead (D P D - P, not
+    // positive semi-definite when correlations are scaled) the smoother's gain amplifies: on the
+    // calibration drive with a wrong mounting it smoothed the accelerometer bias to 1 m/s^2.
+    SystemRows d = SystemRows::Zero();
+    d.leftCols<sx::kDynamicCount>().setIdentity();
+    d.topRows<kBlock>() *= scale;
+    record_covariance_change(c, *before, d);
+  }
   ++c.adaptation.inflations;
   c.adaptation.position.clear();
   c.adaptation.velocity.clear();

@@ -125,12 +125,24 @@ thread_local std::vector<unsigned char> scratch;
 
 void emit(FilterCore& c, RecordType type) { c.record.sink->write(c.record.next_index++, type, scratch); }
 
-void put_node(Out& out, const FilterCore& c) {
+// kIntervalStart / kClose: the state and covariance `p` a covariance step starts from.
+void put_node(Out& out, const FilterCore& c, const Covariance& p) {
   out.put(c.x.time_ns);
   out.put(static_cast<std::int32_t>(c.ekf.n));
   out.put(static_cast<std::uint8_t>(c.navigating() ? 1 : 0));
   out.put(c.x);
+  out.put_symmetric(p, c.ekf.n);
+}
+
+// kPropagation: the prior state, covariance and the rows of the transition matrix with dynamics.
+void put_prior(Out& out, const FilterCore& c, const SystemRows& phi_rows) {
+  out.put(c.x.time_ns);
+  out.put(static_cast<std::int32_t>(c.ekf.n));
+  out.put(c.x);
   out.put_symmetric(c.ekf.p, c.ekf.n);
+  for (int r = 0; r < sx::kDynamicCount; ++r) {
+    for (int col = 0; col < c.ekf.n; ++col) out.put(phi_rows(r, col));
+  }
 }
 
 }  // namespace
@@ -182,7 +194,7 @@ void ForwardRecorder::write(std::uint64_t index, RecordType type, const std::vec
 
 void ForwardRecorder::close(const FilterCore& core) {
   Out out(scratch);
-  put_node(out, core);
+  put_node(out, core, core.ekf.p);
   write(core.record.next_index, RecordType::kClose, scratch);
 }
 
@@ -271,7 +283,7 @@ bool ForwardRecorder::read(std::size_t i, ForwardRecordEntry& e) {
 void record_step_start(FilterCore& c) {
   Out out(scratch);
   if (c.step.dt_s == 0.0) {
-    put_node(out, c);
+    put_node(out, c, c.ekf.p);
     emit(c, RecordType::kIntervalStart);
     return;
   }
@@ -307,13 +319,16 @@ void record_propagation(FilterCore& c) {
   SystemRows phi_rows = g + 0.5 * g.leftCols<R>() * g;
   phi_rows.leftCols<R>() += Eigen::Matrix<double, R, R>::Identity();
   Out out(scratch);
-  out.put(c.x.time_ns);
-  out.put(static_cast<std::int32_t>(c.ekf.n));
-  out.put(c.x);
-  out.put_symmetric(c.ekf.p, c.ekf.n);
-  for (int r = 0; r < R; ++r) {
-    for (int col = 0; col < c.ekf.n; ++col) out.put(phi_rows(r, col));
-  }
+  put_prior(out, c, phi_rows);
+  emit(c, RecordType::kPropagation);
+}
+
+void record_covariance_change(FilterCore& c, const Covariance& before, const SystemRows& phi_rows) {
+  Out start(scratch);
+  put_node(start, c, before);
+  emit(c, RecordType::kIntervalStart);
+  Out prior(scratch);
+  put_prior(prior, c, phi_rows);
   emit(c, RecordType::kPropagation);
 }
 

@@ -11,10 +11,16 @@
 //                   (the strapdown of x+), the transition matrix Phi = I + F T + (F T)^2 / 2 of
 //                   the step (process_model.hpp; formed here, only when recording) and the
 //                   propagated P- (the smoother's prior).
+//                   A covariance transformed outside an update (re-inflation) is written as a
+//                   zero-length step: kIntervalStart with P before the change, kPropagation with
+//                   the same state, the transformation as Phi and P after it. Left inside a node
+//                   (between its kPropagation and the next kIntervalStart), the smoother would
+//                   take the wider posterior for an update's and its gain would use the narrower
+//                   prior: on a wrong installation that carried back corrections of metres.
 //   kUpdate         every accepted measurement update: state before and after, residual, H, R,
 //                   the correction dx and the NIS (diagnostics and tests; the smoother itself
-//                   needs only the next kIntervalStart, which carries P after every change of P,
-//                   including the ones no update record sees).
+//                   needs only the next kIntervalStart, which carries P after every update,
+//                   variance floor and reset since the last kPropagation or covariance change).
 //   kRestart        the filter restarted (divergence, time gap, reset): nothing is smoothed across.
 //   kBreak          the nominal state moved inside an interval without an update (alignment,
 //                   re-anchoring): not smoothed across either.
@@ -42,6 +48,7 @@
 #include "filter/ekf.hpp"
 #include "filter/filter_core.hpp"
 #include "filter/nav_state.hpp"
+#include "filter/process_model.hpp"
 
 namespace navfuse::filter {
 
@@ -124,6 +131,10 @@ void record_step_start(FilterCore& core);
 void record_imu(FilterCore& core, const FilterOptions& o);
 // After the covariance was propagated over core.step (before the step is cleared).
 void record_propagation(FilterCore& core);
+// After the covariance was transformed outside an update and a propagation, P = Phi before Phi^T
+// with the state unchanged (re-inflation, innovation_adaptation.cpp): a zero-length step whose
+// transition is `phi_rows` (the rows with dynamics; identity below them) and no process noise.
+void record_covariance_change(FilterCore& core, const Covariance& before, const SystemRows& phi_rows);
 // After an accepted update that moved the state from `before`.
 void record_update(FilterCore& core, const NavState& before, const Observation& obs, const UpdateResult& r);
 // Before the filter restarts.

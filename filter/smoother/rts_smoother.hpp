@@ -17,6 +17,10 @@
 // between d_k and e_{k+1} (and the covariance between Ps_k and Ps_{k+1}): the error state changes
 // by Phi over at most one covariance step (<= 50 ms), a first-order change.
 //
+// A covariance re-inflation is recorded as a zero-length interval with Phi = D (forward_record.hpp)
+// and no noise: a node like any other, whose gain P+ D (D P+ D)^-1 = D^-1 shrinks the position
+// and velocity correction carried back through it by the inflation factor.
+//
 // Restarts and breaks (forward_record.hpp) end a segment: each is smoothed on its own, and its
 // last node keeps the filtered state. Only intervals that start navigating (levelled, heading and
 // position known) are smoothed: before that the filter's prior is no distribution around the

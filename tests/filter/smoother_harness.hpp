@@ -33,8 +33,8 @@ inline TruthError error_against(const sim::TruthSample& truth, double lat_rad, d
 }
 
 struct ForwardEpoch {
-  sim::TruthSample truth;
-  TruthError error;  // of the forward solution
+  sim::TruthSample truth;  // at the time the sample is stamped with (its true time less any IMU clock offset)
+  TruthError error;        // of the forward solution
   bool navigating = false;
 };
 
@@ -46,7 +46,10 @@ struct SmoothedRun {
   std::uint64_t record_bytes = 0, replaced = 0;
 };
 
-// `on_smoothed` sees each smoothed sample with the truth at its time and its error.
+// `on_smoothed` sees each smoothed sample with the truth at its time and its error. Both the
+// forward and the smoothed solution are scored against the truth at their timestamp: with an IMU
+// clock offset (the scenario's imu.time_offset_s, not corrected) that is not the truth of the
+// sample's true time, which the simulator reports, but the one the filter's GNSS pulls it to.
 inline SmoothedRun run_smoothed(const sim::Scenario& scenario, const FilterOptions& options,
                                 const std::function<void(const SmoothedSample&, const sim::TruthSample&,
                                                          const TruthError&)>& on_smoothed) {
@@ -56,15 +59,32 @@ inline SmoothedRun run_smoothed(const sim::Scenario& scenario, const FilterOptio
   engine.record_to(&recorder);
   SmoothedRun run;
   run.start_ns = sim.start_time_ns();
+  struct Solution {  // the forward solution after an IMU sample: what is scored
+    std::int64_t time_ns;
+    double lat_rad, lon_rad, height_m;
+    Eigen::Vector3d vel_ned_mps;
+    Eigen::Quaterniond q_nb;
+    bool navigating;
+  };
+  std::vector<sim::TruthSample> truth;  // at every IMU sample's true time
+  std::vector<Solution> solutions;
   Measurement m;
   while (sim.next(m)) {
     engine.process(m);
     if (kind_of(m) != MeasurementKind::kImu) continue;
     const NavSolution& s = engine.solution();
+    truth.push_back(sim.truth());
+    solutions.push_back({s.header.time_ns, s.lat_rad, s.lon_rad, s.height_m, s.vel_ned_mps, s.q_nb,
+                         s.mode == NavMode::kNavigation || s.mode == NavMode::kDeadReckoning});
+  }
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    const Solution& s = solutions[i];
+    while (j + 1 < truth.size() && truth[j].time_ns < s.time_ns) ++j;
     ForwardEpoch ep;
-    ep.truth = sim.truth();
+    ep.truth = truth[j].time_ns == s.time_ns ? truth[j] : truth[i];
     ep.error = error_against(ep.truth, s.lat_rad, s.lon_rad, s.height_m, s.vel_ned_mps, s.q_nb);
-    ep.navigating = s.mode == NavMode::kNavigation || s.mode == NavMode::kDeadReckoning;
+    ep.navigating = s.navigating;
     run.forward.push_back(ep);
   }
   recorder.close(engine.core());
