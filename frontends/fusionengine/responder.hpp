@@ -57,6 +57,8 @@ class DeviceControl {
   void respond(const Frame& frame, FusionEngineWriter& writer, std::vector<std::uint8_t>& out);
 
   const config::Config& config() const { return active_.config; }
+  // The active WheelConfig (0x15): how the wheel inputs a client sends are to be read.
+  const WheelConfig& wheel_config() const { return active_.wheel; }
   // Active rate of an output message (kOff for a message navfuse does not output).
   MessageRate rate(std::uint16_t message_type) const;
   // The reset mask of the last ResetRequest not yet taken (then cleared): the nav process resets
