@@ -87,7 +87,9 @@ NavProcess::NavProcess(const RunOptions& options)
   }
   if (!options_.mip_out.empty()) {
     outputs_.push_back(
-        std::make_unique<OutputSink>("--mip-out", mip_uri, std::make_unique<MipDeviceEmulator>(), queue_, actions_));
+        std::make_unique<OutputSink>("--mip-out", mip_uri,
+                                     std::make_unique<MipDeviceEmulator>(filter::options_from_config(config_).mounting_rpy_rad),
+                                     queue_, actions_));
   }
   if (!options_.nmea_out.empty()) {
     outputs_.push_back(
@@ -210,6 +212,13 @@ void NavProcess::apply_actions() {
       case EngineAction::Kind::kGnssLeverArm: runner_->engine().set_gnss_lever_arm(a.vector, a.antenna); break;
       case EngineAction::Kind::kMounting: runner_->engine().set_mounting(a.vector); break;
       case EngineAction::Kind::kWheelLeverArm: runner_->engine().set_wheel_lever_arm(a.vector); break;
+      case EngineAction::Kind::kNonholonomic: runner_->engine().set_nonholonomic(a.enable); break;
+      case EngineAction::Kind::kAiding: runner_->engine().set_aiding(a.aiding, a.enable); break;
+      case EngineAction::Kind::kInitialHeading:
+        if (!runner_->engine().set_initial_heading(a.heading_rad)) {
+          log_event("initial heading command ignored: heading known or magnetometer aiding on");
+        }
+        break;
     }
   }
 }
