@@ -122,7 +122,9 @@ void FeDeviceEmulator::handle(const fe::Frame& frame, std::vector<std::uint8_t>&
       if ((protocol != fe::ProtocolType::kFusionEngine && protocol != fe::ProtocolType::kAll) || !fe::valid_rate(m.rate)) {
         return answer(fe::Response::kValueError);
       }
-      const bool ok = encoder_.rates().set(m.message_id, static_cast<MessageRate>(m.rate));
+      // One table, the stream's: there is no saved copy, so APPLY_AND_SAVE applies only.
+      const bool ok = encoder_.rates().set(m.message_id, static_cast<MessageRate>(m.rate),
+                                           (m.flags & fe::kRateFlagIncludeDisabled) != 0);
       return answer(ok ? fe::Response::kOk : fe::Response::kUnsupportedFeature);
     }
     case MessageType::kGetMessageRate: {

@@ -1,7 +1,7 @@
 // --fe-out: navfuse as a Point One FusionEngine device on the link. Streams what replay's
 // --fe-out file holds (apps/output/fe_epoch_encoder.hpp: IMUOutput, Pose, PoseAux, GNSSInfo)
-// and, as a device does, CalibrationStatus and SystemStatus (1 s by default, the device
-// defaults of frontends/fusionengine/responder.cpp) and EventNotifications for the resets and
+// and, as a device does, CalibrationStatus and SystemStatus (1 s by default, as a Point One
+// device streams them) and EventNotifications for the resets and
 // configuration changes its clients cause and the filter restarts it makes on its own (IMU time
 // gap, divergence; apps/run/fe_device_status.hpp); each message at the
 // rate a client set with SetMessageRate. It answers the device's commands on the same link

@@ -180,6 +180,55 @@ TEST(FeDeviceEmulator, StatusMessagesAtOneHertzUntilAClientTurnsThemOff) {
   EXPECT_EQ(r.count(fe::MessageType::kSystemStatus), 0u);
 }
 
+// The link's one rate table (apps/output/fe_stream_rates.hpp): spec example E11 (L1490-1497)
+// sets Pose on change and GetMessageRate reports it; a wildcard interval rate leaves messages
+// that are off alone unless INCLUDE_DISABLED_MESSAGES is set (L1470-1476).
+TEST(FeDeviceEmulator, MessageRatesFromTheSpecExampleAndTheWildcardRule) {
+  auto emulator = make_fe_device_emulator(config::Config{});
+  fe::FusionEngineWriter host;
+  const auto rate_of = [&](fe::MessageType type) {
+    fe::GetMessageRateMessage get;
+    get.protocol = static_cast<std::uint8_t>(fe::ProtocolType::kFusionEngine);
+    get.message_id = fe::to_u16(type);
+    std::vector<std::uint8_t> reply;
+    CommandEffects effects;
+    emulator->receive(1, host.frame(get), reply, effects);
+    const Reply r = parse_reply(reply);
+    fe::MessageRateResponseMessage m;
+    EXPECT_EQ(r.types.size(), 1u);
+    EXPECT_TRUE(!r.payloads.empty() && fe::decode_payload(r.payloads[0], m));
+    return m.rates.size() == 1 ? m.rates[0].configured_rate : std::uint8_t{0xEE};
+  };
+  const auto set = [&](std::uint16_t id, fe::MessageRate rate, std::uint8_t flags) {
+    fe::SetMessageRateMessage m;
+    m.protocol = static_cast<std::uint8_t>(fe::ProtocolType::kFusionEngine);
+    m.message_id = id;
+    m.rate = static_cast<std::uint8_t>(rate);
+    m.flags = flags;
+    std::vector<std::uint8_t> reply;
+    CommandEffects effects;
+    emulator->receive(1, host.frame(m), reply, effects);
+  };
+  const std::vector<std::uint8_t> e11 = {0x2e, 0x31, 0x00, 0x00, 0x6a, 0x84, 0x77, 0x24, 0x02, 0x00, 0xa4, 0x33,
+                                         0x00, 0x00, 0x00, 0x00, 0x0c, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+                                         0x01, 0x01, 0x00, 0x00, 0x01, 0x00, 0x10, 0x27, 0x01, 0x00, 0x00, 0x00};
+  std::vector<std::uint8_t> reply;
+  CommandEffects effects;
+  emulator->receive(1, e11, reply, effects);
+  const Reply r = parse_reply(reply);
+  ASSERT_EQ(r.types.size(), 1u);
+  ASSERT_EQ(r.types[0], fe::to_u16(fe::MessageType::kCommandResponse));
+  EXPECT_EQ(r.payloads[0][4], static_cast<std::uint8_t>(fe::Response::kOk));
+  EXPECT_EQ(rate_of(fe::MessageType::kPose), static_cast<std::uint8_t>(fe::MessageRate::kOnChange));
+
+  set(fe::to_u16(fe::MessageType::kPoseAux), fe::MessageRate::kOff, 0);
+  set(fe::kAllMessages, fe::MessageRate::k1S, 0);
+  EXPECT_EQ(rate_of(fe::MessageType::kPose), static_cast<std::uint8_t>(fe::MessageRate::k1S));
+  EXPECT_EQ(rate_of(fe::MessageType::kPoseAux), static_cast<std::uint8_t>(fe::MessageRate::kOff));
+  set(fe::kAllMessages, fe::MessageRate::k1S, fe::kRateFlagIncludeDisabled);
+  EXPECT_EQ(rate_of(fe::MessageType::kPoseAux), static_cast<std::uint8_t>(fe::MessageRate::k1S));
+}
+
 // The fault the issue names: configuration responses came from a second writer (sequence 0,
 // 1, ... beside the stream's). Stream, responses of every kind, stream again: one counter.
 TEST(FeDeviceEmulator, OneSequenceCounterForStreamAndEveryResponse) {
