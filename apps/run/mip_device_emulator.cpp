@@ -8,6 +8,7 @@
 #include "core/time/gps_time.hpp"
 #include "filter/engine.hpp"
 #include "frontends/mip/commands.hpp"
+#include "frontends/mip/encoder_calibration.hpp"
 #include "frontends/mip/encoder_solution.hpp"
 #include "frontends/mip/packet.hpp"
 #include "frontends/mip/sensor_to_vehicle.hpp"
@@ -83,8 +84,9 @@ std::vector<MeasurementKind> kinds_of_aiding_source(std::uint16_t source) {
 
 }  // namespace
 
-MipDeviceEmulator::MipDeviceEmulator(const Eigen::Vector3d& mounting_rpy_rad)
-    : c_vs_(rot::dcm_from_rpy(mounting_rpy_rad)) {
+MipDeviceEmulator::MipDeviceEmulator(const Eigen::Vector3d& mounting_rpy_rad, const Eigen::Vector3d& gnss_lever_arm_m,
+                                     bool device_link)
+    : c_vs_(rot::dcm_from_rpy(mounting_rpy_rad)), gnss_lever_arm_m_(gnss_lever_arm_m), device_link_(device_link) {
   responder_.refuse({std::begin(kRefused), std::end(kRefused)});
 }
 
@@ -92,6 +94,7 @@ void MipDeviceEmulator::stream(const OutputEpoch& epoch, std::vector<std::uint8_
   last_epoch_gps_ns_ = epoch.solution.header.time_ns;
   if (responder_.idle() || !responder_.stream_enabled(mip::set::kFilter)) return;
   encoder_.append(epoch, out);
+  if (device_link_ && epoch.pose_due) mip::encode_calibration(epoch.solution, gnss_lever_arm_m_, out);
 }
 
 mip::Framer& MipDeviceEmulator::framer_for(io::PeerId peer) {
@@ -168,7 +171,7 @@ void MipDeviceEmulator::mounting_command(const mip::FieldView& field, CommandEff
   effects.actions.push_back(EngineAction::with_vector(EngineAction::Kind::kMounting, rot::rpy_from_dcm(c_vs_)));
 }
 
-void MipDeviceEmulator::filter_command(const mip::FieldView& field, CommandEffects& effects) const {
+void MipDeviceEmulator::filter_command(const mip::FieldView& field, CommandEffects& effects) {
   bytes::Reader<bytes::Endian::kBig> r(field.data);
   switch (field.desc) {
     case kResetFilter: effects.actions.push_back(EngineAction::reset(filter::Engine::kResetFilter)); return;
@@ -204,7 +207,9 @@ void MipDeviceEmulator::filter_command(const mip::FieldView& field, CommandEffec
   switch (field.desc) {
     case kAntennaOffset: {
       const Eigen::Vector3d offset = read_vec3f(r);
-      if (r.ok()) effects.actions.push_back(EngineAction::with_vector(EngineAction::Kind::kGnssLeverArm, offset, 0));
+      if (!r.ok()) return;
+      gnss_lever_arm_m_ = offset;
+      effects.actions.push_back(EngineAction::with_vector(EngineAction::Kind::kGnssLeverArm, offset, 0));
       return;
     }
     case kSpeedLeverArm: {
@@ -217,6 +222,7 @@ void MipDeviceEmulator::filter_command(const mip::FieldView& field, CommandEffec
       const int receiver = r.u8();  // 1 primary, 2 secondary (CV7 numbering)
       const Eigen::Vector3d offset = read_vec3f(r);
       if (r.ok() && (receiver == 1 || receiver == 2)) {
+        if (receiver == 1) gnss_lever_arm_m_ = offset;
         effects.actions.push_back(EngineAction::with_vector(EngineAction::Kind::kGnssLeverArm, offset, receiver - 1));
       }
       return;

@@ -86,9 +86,12 @@ NavProcess::NavProcess(const RunOptions& options)
         "--fe-out", fe_uri, make_fe_device_emulator(config_, fe_uri.scheme != io::Scheme::kFile), queue_, actions_));
   }
   if (!options_.mip_out.empty()) {
+    const filter::FilterOptions filter_options = filter::options_from_config(config_);
     outputs_.push_back(
         std::make_unique<OutputSink>("--mip-out", mip_uri,
-                                     std::make_unique<MipDeviceEmulator>(filter::options_from_config(config_).mounting_rpy_rad),
+                                     std::make_unique<MipDeviceEmulator>(filter_options.mounting_rpy_rad,
+                                                                         filter_options.gnss_lever_arm_m,
+                                                                         mip_uri.scheme != io::Scheme::kFile),
                                      queue_, actions_));
   }
   if (!options_.nmea_out.empty()) {

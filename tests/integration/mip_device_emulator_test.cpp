@@ -6,11 +6,13 @@
 
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <vector>
 
 #include "apps/run/mip_device_emulator.hpp"
 #include "frontends/mip/commands.hpp"
 #include "frontends/mip/framer.hpp"
+#include "frontends/mip/packet.hpp"
 #include "frontends/mip/writer.hpp"
 
 namespace navfuse::apps {
@@ -247,6 +249,76 @@ TEST(MipDeviceEmulator, LegacyExternalHeadingIsFusedAsTheVehiclesHeading) {
   a = send(emulator, 0x0D, 0x17, heading_field(4.0f, 0.1f, 1));
   EXPECT_EQ(a.replies.at(0).code, mip::ReplyCode::kInvalidParameter);
   EXPECT_TRUE(a.effects.aiding.empty());
+}
+
+float get_f32(std::span<const std::uint8_t> d, std::size_t at) {
+  std::uint32_t u = 0;
+  for (std::size_t k = 0; k < 4; ++k) u = (u << 8) | d[at + k];
+  float v = 0;
+  std::memcpy(&v, &u, 4);
+  return v;
+}
+
+// The 0x82 fields of `bytes` by descriptor (the last of each).
+std::map<std::uint8_t, std::vector<std::uint8_t>> filter_fields(const std::vector<std::uint8_t>& bytes) {
+  std::map<std::uint8_t, std::vector<std::uint8_t>> fields;
+  mip::Framer framer;
+  framer.feed(bytes, [&](const mip::PacketView& p) {
+    if (p.desc_set != 0x82) return;
+    mip::FieldWalker walk(p.payload);
+    mip::FieldView f;
+    while (walk.next(f)) fields[f.desc].assign(f.data.begin(), f.data.end());
+  });
+  return fields;
+}
+
+// On a device link the 0x82 stream carries the estimated calibration (digest §4.2 L4497-4667):
+// odometer scale factor error in the CV7's convention (total SF = user SF (1 + error), navfuse
+// measured = (1 + e) true: error = -e / (1 + e)), and the antenna offset correction added to the
+// offset in force, each valid only while estimated. A file holds what replay writes.
+TEST(MipDeviceEmulator, CalibrationFieldsOnTheLinkWithValidFlags) {
+  const Eigen::Vector3d configured(0.8, -0.4, -1.3);
+  MipDeviceEmulator emulator(Eigen::Vector3d::Zero(), configured);
+  MipDeviceEmulator file(Eigen::Vector3d::Zero(), configured, false);
+  OutputEpoch epoch;
+  epoch.pose_due = true;
+  epoch.solution.header = {1'400'000'000'000'000'000, TimeSource::kGps, 0, NavSolution::kValidBiases};
+  auto& cal = epoch.solution.calibration;
+  cal.odometer_scale_error = {true, 0.02, 0.004};
+  cal.gnss_lever_arm_m.estimated = true;
+  cal.gnss_lever_arm_m.value = Eigen::Vector3d(0.85, -0.4, -1.25);
+  cal.gnss_lever_arm_m.std = Eigen::Vector3d(0.03, 0.03, 0.05);
+  std::vector<std::uint8_t> out, file_out;
+  emulator.stream(epoch, out);
+  file.stream(epoch, file_out);
+
+  auto f = filter_fields(out);
+  ASSERT_EQ(f[0x47].size(), 6u);
+  EXPECT_NEAR(get_f32(f[0x47], 0), -0.02 / 1.02, 1e-7);
+  EXPECT_EQ(f[0x47][5], 1);  // valid
+  EXPECT_NEAR(get_f32(f[0x48], 0), 0.004 / (1.02 * 1.02), 1e-8);
+  ASSERT_EQ(f[0x34].size(), 15u);
+  EXPECT_EQ(f[0x34][0], 1);  // receiver 1
+  EXPECT_NEAR(get_f32(f[0x34], 1), 0.05, 1e-6);
+  EXPECT_NEAR(get_f32(f[0x34], 5), 0.0, 1e-6);
+  EXPECT_NEAR(get_f32(f[0x34], 9), 0.05, 1e-6);
+  EXPECT_EQ(f[0x34][14], 1);
+  EXPECT_NEAR(get_f32(f[0x35], 9), 0.05, 1e-7);
+  EXPECT_FALSE(filter_fields(file_out).contains(0x47));
+
+  // A new antenna offset written (0x0D,0x13): the correction is relative to it.
+  std::vector<std::uint8_t> antenna{kWrite};
+  for (float v : {1.0f, 0.0f, -1.5f}) put_f32(antenna, v);
+  send(emulator, 0x0D, 0x13, antenna);
+  // Odometer scale not estimated: invalid.
+  cal.odometer_scale_error = {false, 0.0, 0.0};
+  out.clear();
+  emulator.stream(epoch, out);
+  f = filter_fields(out);
+  EXPECT_NEAR(get_f32(f[0x34], 1), -0.15, 1e-6);
+  EXPECT_NEAR(get_f32(f[0x34], 9), 0.25, 1e-6);
+  EXPECT_EQ(f[0x47][5], 0);
+  EXPECT_EQ(f[0x48][5], 0);
 }
 
 }  // namespace
