@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/rotation/rotation.hpp"
+#include "filter/alignment.hpp"
 #include "filter/measurement_kinds.hpp"
 #include "filter/solution.hpp"
 
@@ -87,6 +88,7 @@ void Engine::process_imu(const ImuSample& s) {
   const ImuRecord record{*inc, t + to_ns(0.5 * inc->dt_s), ++imu_seq_};
   imu_history_.push_back(record);
   run_increment(record);
+  if (initial_heading_rad_ && core_.mode.levelled) take_initial_heading();
   ++imu_epoch_;
   solution_dirty_ = true;
 }
@@ -261,6 +263,7 @@ const FilterStats& Engine::stats() const {
 
 void Engine::reset(std::uint32_t mask) {
   if ((mask & kResetFilter) != 0) {
+    initial_heading_rad_.reset();
     ++core_.mode.restarts;
     core_.restart(options_);
   } else {
@@ -308,6 +311,30 @@ void Engine::set_mounting(const Eigen::Vector3d& rpy_rad) {
 
 void Engine::set_wheel_lever_arm(const Eigen::Vector3d& lever_arm_m) {
   options_.wheel_lever_arm_m = lever_arm_m;
+}
+
+bool Engine::set_initial_heading(double heading_rad) {
+  if (core_.mode.heading_known || options_.fuses(MeasurementKind::kMagnetometer)) return false;
+  initial_heading_rad_ = heading_rad;
+  if (core_.mode.levelled) take_initial_heading();
+  return true;
+}
+
+void Engine::take_initial_heading() {
+  if (!core_.mode.heading_known) {
+    set_heading(core_, *initial_heading_rad_, options_.initial_heading_std_rad);
+    // Checkpoints before the new heading would restore the old one on a re-propagation.
+    checkpoints_.clear();
+    last_checkpoint_ns_ = INT64_MIN;
+    solution_dirty_ = true;
+  }
+  initial_heading_rad_.reset();
+}
+
+void Engine::set_aiding(MeasurementKind kind, bool on) {
+  if (kind == MeasurementKind::kImu) return;
+  const std::uint32_t bit = 1u << static_cast<unsigned>(kind);
+  options_.aiding_off_mask = on ? options_.aiding_off_mask & ~bit : options_.aiding_off_mask | bit;
 }
 
 std::vector<NavMode> Engine::modes_reached() const {

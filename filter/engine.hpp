@@ -36,6 +36,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -79,6 +80,12 @@ class Engine {
   // at the end of a log, what is neither used nor rejected (decoded = used + rejected + pending).
   std::uint64_t pending(MeasurementKind kind) const;
   const FilterOptions& options() const { return options_; }
+  // Restarts the filter made on its own, by cause (FilterStats::resets counts commands' too):
+  // an IMU gap beyond max_imu_gap_s, a diverged state.
+  std::uint64_t time_gap_restarts() const {
+    return stats_.of(MeasurementKind::kImu).rejected_for(RejectReason::kTimeGap);
+  }
+  std::uint64_t divergence_restarts() const { return core_.mode.divergences; }
 
   void reset(std::uint32_t mask);
   // antenna 0: primary (position/velocity), 1: secondary (dual-antenna heading baseline, and
@@ -87,6 +94,16 @@ class Engine {
   // Sensor -> vehicle roll, pitch, yaw (rad, 3-2-1); like MIP, a new mounting restarts the filter.
   void set_mounting(const Eigen::Vector3d& rpy_rad);
   void set_wheel_lever_arm(const Eigen::Vector3d& lever_arm_m);
+  // A heading for the filter to align to (MIP 0x0D,0x03, digest §6.4): taken with
+  // initial_heading_std_rad once levelled while no heading is known; ignored (false) when the
+  // heading is already known or magnetometer aiding is on ("ignored if magnetometer aiding is
+  // supported and enabled", L8256). A filter reset forgets one not yet taken.
+  bool set_initial_heading(double heading_rad);
+  // The non-holonomic (wheeled-vehicle) constraint on or off (MIP 0x0D,0x63).
+  void set_nonholonomic(bool on) { options_.land_vehicle = on; }
+  // Aiding of `kind` on, as the configuration has it, or off: then counted as ignored (MIP
+  // 0x0D,0x50). The IMU is not aiding and stays on.
+  void set_aiding(MeasurementKind kind, bool on);
   std::vector<NavMode> modes_reached() const;
 
   // Records the forward pass for the smoother from now on (filter/smoother/forward_record.hpp);
@@ -130,9 +147,11 @@ class Engine {
   void maybe_checkpoint(const ImuRecord& record);
   void replay_from(std::int64_t time_ns);
   void forget_history();
+  void take_initial_heading();
   void count(MeasurementKind kind, const FuseResult& r);
   void fill_solution() const;
 
+  std::optional<double> initial_heading_rad_;  // set_initial_heading(), not yet taken
   FilterOptions options_;
   FilterCore core_;
   ImuInput imu_input_;

@@ -70,6 +70,7 @@ void FilterCore::restart(const FilterOptions& o) {
   mode.reached_mask = previous.reached_mask;
   mode.diverged = previous.diverged;
   mode.restarts = previous.restarts;
+  mode.divergences = previous.divergences;
   mode.gnss_recoveries = previous.gnss_recoveries;
   mode.zupts = previous.zupts;
   mode.nhc_updates = previous.nhc_updates;
@@ -167,6 +168,7 @@ bool FilterCore::check_divergence(const FilterOptions& o) {
   if (state_finite && ekf.finite() && !lost) return false;
   mode.diverged = true;
   ++mode.restarts;
+  ++mode.divergences;
   restart(o);
   return true;
 }

@@ -137,6 +137,7 @@ struct ModeState {
   std::int64_t last_imu_fault_ns = INT64_MIN;
   // Event counters (kept across restarts; the Engine reports them in FilterStats).
   std::uint64_t restarts = 0;
+  std::uint64_t divergences = 0;  // of restarts: those check_divergence() made
   std::uint64_t gnss_recoveries = 0;
   std::uint64_t zupts = 0;
   std::uint64_t nhc_updates = 0;

@@ -143,6 +143,7 @@ double FilterOptions::time_offset_s(MeasurementKind kind) const {
 }
 
 bool FilterOptions::fuses(MeasurementKind kind) const {
+  if ((aiding_off_mask & (1u << static_cast<unsigned>(kind))) != 0) return false;
   switch (kind) {
     case MeasurementKind::kMagnetometer: return magnetometer.enabled;
     case MeasurementKind::kPressure: return baro.enabled;

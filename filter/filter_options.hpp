@@ -155,9 +155,12 @@ struct FilterOptions {
   double gnss_time_offset_s = 0.0;
   double wheel_time_offset_s = 0.0;
   double time_offset_s(MeasurementKind kind) const;
-  // False for the kinds the configuration switched off (magnetometer, pressure unless enabled):
-  // counted as ignored, like kinds the filter never fuses.
+  // False for the kinds the configuration switched off (magnetometer, pressure unless enabled)
+  // and those switched off at run time: counted as ignored, like kinds the filter never fuses.
   bool fuses(MeasurementKind kind) const;
+  // Kinds switched off at run time (Engine::set_aiding; MIP aiding control 0x0D,0x50), one bit
+  // per MeasurementKind. Switching back on restores what the configuration says.
+  std::uint32_t aiding_off_mask = 0;
 
   // Numerics and timing.
   double covariance_interval_s = 0.05;  // covariance propagated at most this far per step

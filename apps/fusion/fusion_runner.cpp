@@ -92,6 +92,8 @@ void FusionRunner::after_imu(const ImuSample& s, std::int64_t arrival_ns) {
   }
   epoch_.num_sats = num_sats_;
   epoch_.arrival_ns = arrival_ns;
+  epoch_.time_gap_restarts = engine_.time_gap_restarts();
+  epoch_.divergence_restarts = engine_.divergence_restarts();
   epoch_.solution_deferred = solutions_ == Solutions::kDeferred;
   if (epoch_.solution_deferred) {
     engine_.capture_solution(epoch_.solution_inputs);

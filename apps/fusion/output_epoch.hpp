@@ -21,6 +21,10 @@ struct OutputEpoch {
   std::uint64_t gnss_fused_total = 0;  // running count of fused GNSS positions
   std::uint8_t num_sats = 0;           // of the newest GNSS fix (0: unknown)
   std::int64_t arrival_ns = 0;         // host monotonic time the IMU sample arrived (run; 0 in replay)
+  // Running counts of the restarts the filter made on its own (filter::Engine), which a device
+  // link announces as it happens.
+  std::uint64_t time_gap_restarts = 0;
+  std::uint64_t divergence_restarts = 0;
 
   void fill_deferred_solution() {
     if (!solution_deferred) return;

@@ -27,14 +27,18 @@ frontends::fusionengine::MessageRate FeStreamRates::rate(MessageType type) const
   return MessageRate::kOff;
 }
 
-bool FeStreamRates::set(std::uint16_t message_id, MessageRate rate) {
+bool FeStreamRates::set(std::uint16_t message_id, MessageRate rate, bool include_disabled) {
   const auto apply = [rate](Entry& e) {
     e.rate = rate;
     const double p = frontends::fusionengine::interval_s(rate);
     e.interval = OutputRate(p > 0 ? 1.0 / p : 0.0);
   };
   if (message_id == frontends::fusionengine::kAllMessages) {
-    for (Entry& e : entries_) apply(e);
+    const bool interval = frontends::fusionengine::interval_s(rate) > 0;
+    for (Entry& e : entries_) {
+      if (interval && !include_disabled && e.rate == MessageRate::kOff) continue;
+      apply(e);
+    }
     return true;
   }
   Entry* e = find(static_cast<MessageType>(message_id));

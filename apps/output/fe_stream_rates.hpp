@@ -2,7 +2,7 @@
 // IMUOutput 11000; and on a device-emulating link CalibrationStatus 10004 and SystemStatus
 // 10500) with the rate each goes out at. All start at "default", which is the DESIGN.md
 // --fe-out contract; a device-emulating link lets clients change them with SetMessageRate
-// (spec L1419-1440), a file keeps the defaults.
+// (spec L1419-1440), a file keeps the defaults. This is the one rate table of an FE stream.
 #pragma once
 
 #include <array>
@@ -22,8 +22,10 @@ class FeStreamRates {
   };
   FeStreamRates();
 
-  // False for a message navfuse does not stream (the device answers "unsupported").
-  bool set(std::uint16_t message_id, frontends::fusionengine::MessageRate rate);
+  // False for a message navfuse does not stream (the device answers "unsupported"). With the
+  // wildcard message id and an interval rate, only messages that are on change unless
+  // `include_disabled` (the INCLUDE_DISABLED_MESSAGES flag, spec L1470-1476).
+  bool set(std::uint16_t message_id, frontends::fusionengine::MessageRate rate, bool include_disabled = false);
   frontends::fusionengine::MessageRate rate(frontends::fusionengine::MessageType type) const;
   // Whether `type` goes out at this epoch. `default_due` is when it would at its default rate,
   // `on_change` whether its content changed since it last went out.

@@ -20,7 +20,7 @@ inline std::int64_t monotonic_ns() {
 
 // Source ids of measurements that did not come from an --in input.
 inline constexpr std::uint16_t kSourceLcmAiding = 0xFFFE;
-inline constexpr std::uint16_t kSourceOutputCommand = 0xFFFD;  // MIP 0x13 on an output link
+inline constexpr std::uint16_t kSourceOutputCommand = 0xFFFD;  // aiding / sensor inputs on an output link
 
 struct ArrivedMeasurement {
   Measurement measurement;

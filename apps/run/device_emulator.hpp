@@ -20,7 +20,7 @@ namespace navfuse::apps {
 
 // What the commands of one receive() ask of the rest of the nav process.
 struct CommandEffects {
-  std::vector<Measurement> aiding;    // external aiding to fuse (MIP 0x13)
+  std::vector<Measurement> aiding;    // to fuse: MIP 0x13 aiding, FusionEngine sensor inputs
   std::vector<EngineAction> actions;  // resets, lever arms, mounting
   void clear() {
     aiding.clear();

@@ -1,6 +1,7 @@
 #include "apps/run/fe_device_emulator.hpp"
 
 #include "apps/run/arrived_measurement.hpp"
+#include "apps/run/run_log.hpp"
 #include "core/rotation/rotation.hpp"
 #include "filter/engine.hpp"
 #include "frontends/fusionengine/payload_reader.hpp"
@@ -64,8 +65,10 @@ void FeDeviceEmulator::stream(const OutputEpoch& epoch, std::vector<std::uint8_t
   have_last_ = true;
   const NavSolution& s = epoch.solution;
   status_.update(s);
+  inputs_.set_now_ns(s.header.time_ns);
   encoder_.append(epoch, out);
   if (!device_link_) return;
+  announce_restarts(epoch);
   auto& writer = encoder_.writer();
   for (auto& e : pending_events_) writer.append(std::move(e), out);
   pending_events_.clear();
@@ -77,6 +80,20 @@ void FeDeviceEmulator::stream(const OutputEpoch& epoch, std::vector<std::uint8_t
     writer.append(status_.calibration(s), out);
   }
   if (encoder_.rates().due(MessageType::kSystemStatus, t, system_default, true)) writer.append(status_.system(s), out);
+}
+
+void FeDeviceEmulator::announce_restarts(const OutputEpoch& epoch) {
+  // A restart of the filter's own clears its position, velocity, attitude and IMU corrections:
+  // what RESET_NAVIGATION_ENGINE_DATA resets on a device (spec L743), reported with the flags
+  // a ResetRequest of that mask would carry (L2639).
+  const auto announce = [&](std::uint64_t count, std::uint64_t& seen, const char* cause) {
+    if (count <= seen) return;
+    seen = count;
+    pending_events_.push_back(FeDeviceStatus::event(fe::EventType::kReset, fe::reset::kResetNavigationEngineData,
+                                                    std::string("filter restarted: ") + cause, monotonic_ns()));
+  };
+  announce(epoch.time_gap_restarts, time_gap_restarts_seen_, "IMU time gap beyond max_imu_gap_s");
+  announce(epoch.divergence_restarts, divergence_restarts_seen_, "diverged");
 }
 
 fe::Framer& FeDeviceEmulator::framer_for(io::PeerId peer) {
@@ -105,7 +122,9 @@ void FeDeviceEmulator::handle(const fe::Frame& frame, std::vector<std::uint8_t>&
       if ((protocol != fe::ProtocolType::kFusionEngine && protocol != fe::ProtocolType::kAll) || !fe::valid_rate(m.rate)) {
         return answer(fe::Response::kValueError);
       }
-      const bool ok = encoder_.rates().set(m.message_id, static_cast<MessageRate>(m.rate));
+      // One table, the stream's: there is no saved copy, so APPLY_AND_SAVE applies only.
+      const bool ok = encoder_.rates().set(m.message_id, static_cast<MessageRate>(m.rate),
+                                           (m.flags & fe::kRateFlagIncludeDisabled) != 0);
       return answer(ok ? fe::Response::kOk : fe::Response::kUnsupportedFeature);
     }
     case MessageType::kGetMessageRate: {
@@ -165,6 +184,7 @@ void FeDeviceEmulator::handle(const fe::Frame& frame, std::vector<std::uint8_t>&
       const std::uint64_t changes = control_.config_changes();
       control_.respond(frame, encoder_.writer(), reply);
       config_changes_to_actions(before, control_.config(), effects);
+      inputs_.set_wheel_config(control_.wheel_config());
       if (control_.config_changes() != changes) {
         pending_events_.push_back(FeDeviceStatus::event(fe::EventType::kConfigChange, 0,
                                                         "configuration changed by a client", monotonic_ns()));
@@ -180,7 +200,19 @@ void FeDeviceEmulator::handle(const fe::Frame& frame, std::vector<std::uint8_t>&
       // the client waiting for a response that never comes.
       return answer(fe::Response::kUnsupportedFeature);
     default:
-      return;  // not a command: a client's own stream (e.g. echoed output) is not answered
+      // Sensor inputs are fused; anything else that is not a command (e.g. echoed output) is
+      // neither answered nor used.
+      if (inputs_.decode(frame, effects.aiding) && inputs_.decode_errors() > input_errors_logged_) {
+        // Reported as they first happen and then at each power of ten: a client that keeps
+        // sending a wrong layout does not flood the log.
+        const std::uint64_t n = inputs_.decode_errors();
+        if (n >= 10 * input_errors_logged_) {
+          log_event("--fe-out: sensor input (type " + std::to_string(frame.header.message_type) +
+                    ") shorter than its layout, dropped (" + std::to_string(n) + " so far)");
+          input_errors_logged_ = n;
+        }
+      }
+      return;
   }
 }
 

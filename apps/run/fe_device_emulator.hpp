@@ -1,8 +1,9 @@
 // --fe-out: navfuse as a Point One FusionEngine device on the link. Streams what replay's
 // --fe-out file holds (apps/output/fe_epoch_encoder.hpp: IMUOutput, Pose, PoseAux, GNSSInfo)
-// and, as a device does, CalibrationStatus and SystemStatus (1 s by default, the device
-// defaults of frontends/fusionengine/responder.cpp) and EventNotifications for the resets and
-// configuration changes its clients cause (apps/run/fe_device_status.hpp); each message at the
+// and, as a device does, CalibrationStatus and SystemStatus (1 s by default, as a Point One
+// device streams them) and EventNotifications for the resets and
+// configuration changes its clients cause and the filter restarts it makes on its own (IMU time
+// gap, divergence; apps/run/fe_device_status.hpp); each message at the
 // rate a client set with SetMessageRate. It answers the device's commands on the same link
 // (configuration commands and VersionInfo through frontends/fusionengine/responder.hpp). All of
 // it, responses included, carries one sequence counter (spec L190: the stream's).
@@ -17,6 +18,7 @@
 #include "apps/output/fe_epoch_encoder.hpp"
 #include "apps/run/device_emulator.hpp"
 #include "apps/run/fe_device_status.hpp"
+#include "apps/run/fe_link_inputs.hpp"
 #include "core/config/config.hpp"
 #include "frontends/fusionengine/framer.hpp"
 #include "frontends/fusionengine/messages_control.hpp"
@@ -36,6 +38,8 @@ class FeDeviceEmulator final : public DeviceEmulator {
  private:
   void handle(const frontends::fusionengine::Frame& frame, std::vector<std::uint8_t>& reply, CommandEffects& effects);
   frontends::fusionengine::Framer& framer_for(io::PeerId peer);
+  // Queues a RESET event for each restart the filter made on its own since the last epoch.
+  void announce_restarts(const OutputEpoch& epoch);
 
   config::Config config_;
   // SetConfig / GetConfig / SaveConfig are answered by the front-end's device-compatible
@@ -47,9 +51,12 @@ class FeDeviceEmulator final : public DeviceEmulator {
   bool have_last_ = false;
   bool device_link_;
   FeDeviceStatus status_;
+  FeLinkInputs inputs_;  // sensor inputs clients send, fused as from an --in FusionEngine stream
+  std::uint64_t input_errors_logged_ = 0;
   OutputRate calibration_default_{1.0}, system_default_{1.0};  // Hz, the device defaults
   // Events of the commands since the last epoch: they go to every client, with the stream.
   std::vector<frontends::fusionengine::EventNotificationMessage> pending_events_;
+  std::uint64_t time_gap_restarts_seen_ = 0, divergence_restarts_seen_ = 0;
 };
 
 std::unique_ptr<DeviceEmulator> make_fe_device_emulator(const config::Config& config, bool device_link = true);

@@ -86,8 +86,13 @@ NavProcess::NavProcess(const RunOptions& options)
         "--fe-out", fe_uri, make_fe_device_emulator(config_, fe_uri.scheme != io::Scheme::kFile), queue_, actions_));
   }
   if (!options_.mip_out.empty()) {
+    const filter::FilterOptions filter_options = filter::options_from_config(config_);
     outputs_.push_back(
-        std::make_unique<OutputSink>("--mip-out", mip_uri, std::make_unique<MipDeviceEmulator>(), queue_, actions_));
+        std::make_unique<OutputSink>("--mip-out", mip_uri,
+                                     std::make_unique<MipDeviceEmulator>(filter_options.mounting_rpy_rad,
+                                                                         filter_options.gnss_lever_arm_m,
+                                                                         mip_uri.scheme != io::Scheme::kFile),
+                                     queue_, actions_));
   }
   if (!options_.nmea_out.empty()) {
     outputs_.push_back(
@@ -210,6 +215,13 @@ void NavProcess::apply_actions() {
       case EngineAction::Kind::kGnssLeverArm: runner_->engine().set_gnss_lever_arm(a.vector, a.antenna); break;
       case EngineAction::Kind::kMounting: runner_->engine().set_mounting(a.vector); break;
       case EngineAction::Kind::kWheelLeverArm: runner_->engine().set_wheel_lever_arm(a.vector); break;
+      case EngineAction::Kind::kNonholonomic: runner_->engine().set_nonholonomic(a.enable); break;
+      case EngineAction::Kind::kAiding: runner_->engine().set_aiding(a.aiding, a.enable); break;
+      case EngineAction::Kind::kInitialHeading:
+        if (!runner_->engine().set_initial_heading(a.heading_rad)) {
+          log_event("initial heading command ignored: heading known or magnetometer aiding on");
+        }
+        break;
     }
   }
 }

@@ -5,6 +5,7 @@ target_sources(navfuse_apps PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/device_setup.cpp
   ${CMAKE_CURRENT_LIST_DIR}/fe_device_emulator.cpp
   ${CMAKE_CURRENT_LIST_DIR}/fe_device_status.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/fe_link_inputs.cpp
   ${CMAKE_CURRENT_LIST_DIR}/input_endpoint.cpp
   ${CMAKE_CURRENT_LIST_DIR}/input_reader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/input_recorder.cpp

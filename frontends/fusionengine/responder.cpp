@@ -11,18 +11,6 @@ namespace {
 using rot::kDegToRad;
 using rot::kRadToDeg;
 
-// navfuse's FusionEngine outputs (DESIGN.md --fe-out, issue #3) and their default rates.
-std::vector<OutputRate> default_rates() {
-  return {{to_u16(MessageType::kPose), MessageRate::k100Ms},
-          {to_u16(MessageType::kPoseAux), MessageRate::k100Ms},
-          {to_u16(MessageType::kGnssInfo), MessageRate::kOnChange},
-          {to_u16(MessageType::kCalibrationStatus), MessageRate::k1S},
-          {to_u16(MessageType::kImuOutput), MessageRate::kOnChange},
-          {to_u16(MessageType::kGnssAttitudeOutput), MessageRate::kOnChange},
-          {to_u16(MessageType::kVehicleSpeedOutput), MessageRate::kOnChange},
-          {to_u16(MessageType::kSystemStatus), MessageRate::k1S}};
-}
-
 // Lever arms: FusionEngine Point3f is FLU body (spec L1039-1044), navfuse config FRD.
 Point3f point_from(const config::Vec3& frd) {
   return {{static_cast<float>(frd[0]), static_cast<float>(-frd[1]), static_cast<float>(-frd[2])}};
@@ -90,14 +78,7 @@ bool DeviceControl::State::operator==(const State& o) const {
 DeviceControl::DeviceControl(const config::Config& config, VersionStrings versions)
     : versions_(std::move(versions)) {
   default_.config = config;
-  default_.rates = default_rates();
   active_ = saved_ = default_;
-}
-
-MessageRate DeviceControl::rate(std::uint16_t message_type) const {
-  for (const auto& r : active_.rates)
-    if (r.message_type == message_type) return r.rate;
-  return MessageRate::kOff;
 }
 
 const DeviceControl::State& DeviceControl::state_for(std::uint8_t source) const {
@@ -194,62 +175,6 @@ Response DeviceControl::set_config(const SetConfigMessage& m) {
   return Response::kOk;
 }
 
-Response DeviceControl::set_message_rate(const SetMessageRateMessage& m) {
-  const auto protocol = static_cast<ProtocolType>(m.protocol);
-  if (protocol != ProtocolType::kFusionEngine && protocol != ProtocolType::kAll) return Response::kUnsupportedFeature;
-  if (!valid_rate(m.rate)) return Response::kValueError;
-  const bool all = m.message_id == kAllMessages || protocol == ProtocolType::kAll;
-  const bool include_disabled = (m.flags & kRateFlagIncludeDisabled) != 0;
-  bool matched = false;
-  auto apply = [&](std::vector<OutputRate>& rates, const std::vector<OutputRate>& defaults) {
-    for (std::size_t i = 0; i < rates.size(); ++i) {
-      auto& r = rates[i];
-      if (!all && r.message_type != m.message_id) continue;
-      matched = true;
-      // With a wildcard and an interval rate only enabled messages change unless the include-
-      // disabled flag is set (L1470-1476).
-      if (all && !include_disabled && r.rate == MessageRate::kOff && interval_s(static_cast<MessageRate>(m.rate)) > 0) {
-        continue;
-      }
-      r.rate = m.rate == 0xFF ? defaults[i].rate : static_cast<MessageRate>(m.rate);
-    }
-  };
-  apply(active_.rates, default_.rates);
-  if (!matched) return Response::kValueError;  // not a message navfuse outputs
-  if ((m.flags & kRateFlagApplyAndSave) != 0) apply(saved_.rates, default_.rates);
-  // The Pose rate is the engine's output rate (DESIGN.md output.rate_hz; 0 = every IMU sample).
-  const MessageRate pose = rate(to_u16(MessageType::kPose));
-  if (interval_s(pose) > 0) active_.config.output.rate_hz = 1.0 / interval_s(pose);
-  if (pose == MessageRate::kOnChange) active_.config.output.rate_hz = 0;
-  return Response::kOk;
-}
-
-void DeviceControl::get_message_rate(const GetMessageRateMessage& m, FusionEngineWriter& writer,
-                                     std::vector<std::uint8_t>& out) {
-  MessageRateResponseMessage resp;
-  resp.source = m.source;
-  resp.output_interface = m.output_interface;
-  const auto protocol = static_cast<ProtocolType>(m.protocol);
-  if (protocol != ProtocolType::kFusionEngine && protocol != ProtocolType::kAll) {
-    resp.response = static_cast<std::uint8_t>(Response::kUnsupportedFeature);
-  } else {
-    const State& s = state_for(m.source);
-    for (std::size_t i = 0; i < s.rates.size(); ++i) {
-      const auto& r = s.rates[i];
-      if (m.message_id != kAllMessages && r.message_type != m.message_id) continue;
-      MessageRateEntry e;
-      e.protocol = static_cast<std::uint8_t>(ProtocolType::kFusionEngine);
-      e.flags = active_.rates[i].rate != saved_.rates[i].rate ? 1 : 0;
-      e.message_id = r.message_type;
-      e.configured_rate = static_cast<std::uint8_t>(r.rate);
-      e.effective_rate = static_cast<std::uint8_t>(r.rate);
-      resp.rates.push_back(e);
-    }
-    resp.response = static_cast<std::uint8_t>(resp.rates.empty() ? Response::kValueError : Response::kOk);
-  }
-  writer.append(resp, out);
-}
-
 void DeviceControl::on_frame(const Frame& f, FusionEngineWriter& writer, std::vector<std::uint8_t>& out) {
   const std::uint32_t seq = f.header.sequence;
   auto respond = [&](Response code) { writer.append(CommandResponseMessage{seq, static_cast<std::uint8_t>(code)}, out); };
@@ -297,10 +222,6 @@ void DeviceControl::on_frame(const Frame& f, FusionEngineWriter& writer, std::ve
           default: respond(Response::kValueError); return;
         }
         respond(Response::kOk);
-      } else if constexpr (type == MessageType::kSetMessageRate) {
-        respond(set_message_rate(msg));
-      } else if constexpr (type == MessageType::kGetMessageRate) {
-        get_message_rate(msg, writer, out);
       } else if constexpr (type == MessageType::kResetRequest) {
         reset_request_ = msg.reset_mask;
         if ((msg.reset_mask & reset::kResetConfig) != 0) active_ = saved_ = default_;

@@ -6,8 +6,9 @@
 //                (0x14) and wheel config (0x15) are kept here -> CommandResponse
 //   GetConfig    reports the active / saved / default value -> ConfigResponse
 //   SaveConfig   save, revert to saved, revert to default -> CommandResponse
-//   SetMessageRate / GetMessageRate   per-message output rate table (FusionEngine protocol; one
-//                table for every interface navfuse serves) -> CommandResponse / MessageRateResponse
+//   SetMessageRate / GetMessageRate   not here: the rates belong to the stream that applies them
+//                (apps/output/fe_stream_rates.hpp, answered by the --fe-out link) -> Unsupported
+//                Feature from this handler alone
 //   ResetRequest records "reset requested with mask M" (RESET_CONFIG also restores defaults)
 //                -> CommandResponse
 //   MessageRequest  VersionInfo (13003) -> VersionInfo; other types -> CommandResponse Value Error
@@ -38,12 +39,6 @@ struct VersionStrings {
   std::string receiver;
 };
 
-// Output messages whose rate the table controls, with the device-default rate of each.
-struct OutputRate {
-  std::uint16_t message_type = 0;
-  MessageRate rate = MessageRate::kOff;
-};
-
 class DeviceControl {
  public:
   explicit DeviceControl(const config::Config& config, VersionStrings versions = {});
@@ -57,8 +52,8 @@ class DeviceControl {
   void respond(const Frame& frame, FusionEngineWriter& writer, std::vector<std::uint8_t>& out);
 
   const config::Config& config() const { return active_.config; }
-  // Active rate of an output message (kOff for a message navfuse does not output).
-  MessageRate rate(std::uint16_t message_type) const;
+  // The active WheelConfig (0x15): how the wheel inputs a client sends are to be read.
+  const WheelConfig& wheel_config() const { return active_.wheel; }
   // The reset mask of the last ResetRequest not yet taken (then cleared): the nav process resets
   // its filter per the mask (reset:: bits in messages_control.hpp).
   std::optional<std::uint32_t> take_reset_request() {
@@ -68,18 +63,17 @@ class DeviceControl {
   }
   const frontends::StreamCounters& counters() const { return framer_.counters(); }
   // Counts the commands that changed the active configuration (lever arms, orientation, vehicle,
-  // wheel config; rates aside), for CONFIG_CHANGE event notifications (spec L2640).
+  // wheel config), for CONFIG_CHANGE event notifications (spec L2640).
   std::uint64_t config_changes() const { return config_changes_; }
 
  private:
-  // Everything a SetConfig / SetMessageRate changes; three copies: active, saved, default.
+  // Everything a SetConfig changes; three copies: active, saved, default.
   struct State {
     config::Config config;
     Point3f device_lever_arm;
     Point3f output_lever_arm;
     VehicleDetails vehicle;
     WheelConfig wheel;
-    std::vector<OutputRate> rates;
     bool operator==(const State&) const;
   };
 
@@ -87,8 +81,6 @@ class DeviceControl {
   Response set_config(const SetConfigMessage& m);
   std::optional<std::vector<std::uint8_t>> config_value(const State& s, std::uint16_t type) const;
   Response apply_config_value(State& s, std::uint16_t type, std::span<const std::uint8_t> value) const;
-  Response set_message_rate(const SetMessageRateMessage& m);
-  void get_message_rate(const GetMessageRateMessage& m, FusionEngineWriter& writer, std::vector<std::uint8_t>& out);
   const State& state_for(std::uint8_t source) const;
 
   State active_, saved_, default_;

@@ -40,6 +40,9 @@ class MeasurementMapper {
     wheel_config_known_ = true;
   }
   const WheelConfig& wheel_config() const { return wheel_config_; }
+  // For a stream whose P1 -> GPS offset is known rather than learnt from its messages (navfuse's
+  // own link, whose P1 time is its GPS time: from_core.cpp p1_time_of).
+  void set_gps_minus_p1_ns(std::int64_t ns) { gps_minus_p1_ns_ = ns; }
 
   // One overload per message kind that carries a measurement or stream state; the decoder calls
   // whichever exists for the decoded type (shared layouts take their base struct).

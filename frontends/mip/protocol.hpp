@@ -98,6 +98,10 @@ inline constexpr std::uint8_t kStatus = 0x10;
 inline constexpr std::uint8_t kTimestamp = 0x11;
 inline constexpr std::uint8_t kQuaternionUnc = 0x12;
 inline constexpr std::uint8_t kGravity = 0x13;
+inline constexpr std::uint8_t kAntennaOffsetCorrection = 0x34;     // multi-antenna, L4497
+inline constexpr std::uint8_t kAntennaOffsetCorrectionUnc = 0x35;  // L4512
+inline constexpr std::uint8_t kOdometerScaleError = 0x47;          // L4654
+inline constexpr std::uint8_t kOdometerScaleErrorUnc = 0x48;       // L4667
 inline constexpr std::uint8_t kDualAntennaStatus = 0x49;
 // Filter states (0x82,0x10), CV7/GQ7 values (L4370-4379; errata E36: ignore the GX5 values).
 inline constexpr std::uint16_t kStateInit = 1, kStateVerticalGyro = 2, kStateAhrs = 3, kStateFullNav = 4;

@@ -1,7 +1,10 @@
 #include "frontends/mip/responder.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
+#include "core/bytes/byte_reader.hpp"
 #include "core/bytes/checks.hpp"
 #include "frontends/mip/field_schema.hpp"
 #include "frontends/mip/packet.hpp"
@@ -31,6 +34,29 @@ constexpr ResponseMap kResponses[] = {
 };
 
 constexpr std::uint8_t kSpeedLeverArm = 0x61;  // (0x0D,0x61)
+constexpr std::uint8_t kAidingControl = 0x50;  // (0x0D,0x50)
+constexpr std::uint8_t kInitialHeading = 0x03;  // (0x0D,0x03): heading [rad] in [-pi, pi] (digest §6.4)
+constexpr std::uint16_t kLastAidingSource = 8;  // BODY_FRAME_VEL; 0xFFFF (ALL) is not for Write (digest §6.5)
+constexpr std::uint8_t kExternalHeading = 0x17, kExternalHeadingWithTime = 0x1F;  // (0x0D,..), legacy
+constexpr std::uint8_t kHeadingTypeTrue = 1, kHeadingTypeMagnetic = 2;
+// Headings are f32: +-pi as a client writes it rounds to just beyond the double pi.
+constexpr double kMaxHeadingRad = static_cast<float>(std::numbers::pi);
+
+// (0x0D,0x17) / (0x0D,0x1F) (digest §6.8, L8322-8420): a heading beyond +-pi or an uncertainty
+// <= 0 is an invalid parameter ("<= 0 NACKed"); a magnetic heading needs a declination the
+// device link does not have: command failed, so the client knows it was not used.
+ReplyCode check_external_heading(std::uint8_t desc, std::span<const std::uint8_t> data) {
+  bytes::Reader<bytes::Endian::kBig> r(data);
+  if (desc == kExternalHeadingWithTime) {
+    r.f64();  // GPS time of week
+    r.u16();  // week
+  }
+  const double heading = r.f32(), uncertainty = r.f32();
+  const std::uint8_t type = r.u8();
+  if (!r.ok() || !(std::abs(heading) <= kMaxHeadingRad) || !(uncertainty > 0)) return ReplyCode::kInvalidParameter;
+  if (type == kHeadingTypeMagnetic) return ReplyCode::kCommandFailed;
+  return type == kHeadingTypeTrue ? ReplyCode::kAck : ReplyCode::kInvalidParameter;
+}
 
 int response_desc(std::uint8_t s, std::uint8_t cmd) {
   for (const auto& r : kResponses)
@@ -163,6 +189,14 @@ ReplyCode CommandResponder::handle_command(std::uint8_t desc_set, std::uint8_t d
   if (!s->has_function) {
     std::size_t group = 0;
     if (data.size() < fixed_size(*s, &group)) return ReplyCode::kInvalidParameter;
+    if (desc_set == set::kFilterCmd && (desc == kExternalHeading || desc == kExternalHeadingWithTime)) {
+      return check_external_heading(desc, data);
+    }
+    if (desc_set == set::kFilterCmd && desc == kInitialHeading) {
+      bytes::Reader<bytes::Endian::kBig> r(data);
+      const double heading = r.f32();
+      return std::abs(heading) <= kMaxHeadingRad ? ReplyCode::kAck : ReplyCode::kInvalidParameter;
+    }
     return ReplyCode::kAck;  // actions (reset, run, capture...) are acknowledged
   }
   if (data.empty()) return ReplyCode::kInvalidParameter;
@@ -186,6 +220,9 @@ ReplyCode CommandResponder::handle_command(std::uint8_t desc_set, std::uint8_t d
       }
       // Speed measurement lever arm: "source ... reserved, must be 1" (digest §6.15, L8688).
       if (desc_set == set::kFilterCmd && desc == kSpeedLeverArm && data[1] != 1) return ReplyCode::kInvalidParameter;
+      if (desc_set == set::kFilterCmd && desc == kAidingControl && ((data[1] << 8) | data[2]) > kLastAidingSource) {
+        return ReplyCode::kInvalidParameter;
+      }
       settings_[key].assign(data.begin() + 1 + static_cast<std::ptrdiff_t>(key_bytes), data.end());
       if (desc_set == set::k3dm && desc == kStreamControl && data.size() >= 3) streams_[data[1]] = data[2] != 0;
       return ReplyCode::kAck;

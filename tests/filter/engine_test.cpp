@@ -244,5 +244,111 @@ TEST(Engine, DeadReckoningAfterGnssTimeoutAndResetCommand) {
   EXPECT_FALSE(e.solution_valid());
 }
 
+// The restarts the filter makes on its own are counted by cause, apart from commanded ones
+// (a device link announces them): an IMU gap beyond max_imu_gap_s, then a position std beyond
+// divergence_position_std_m while navigating.
+TEST(Engine, OwnRestartsAreCountedByCause) {
+  FilterOptions o = options_with_heading();
+  o.max_imu_gap_s = 0.5;
+  Engine e{o};
+  Stream s = make_static_stream(10.0, true);
+  std::int64_t last_imu_ns = 0;
+  for (const auto& m : s.items) {
+    e.process(m);
+    if (const auto* imu = std::get_if<ImuSample>(&m)) last_imu_ns = imu->header.time_ns;
+  }
+  ASSERT_EQ(e.solution().mode, NavMode::kNavigation);
+  e.reset(Engine::kResetFilter);  // commanded: a restart, not one of the filter's own
+  EXPECT_EQ(e.stats().resets, 1u);
+  EXPECT_EQ(e.time_gap_restarts(), 0u);
+
+  test::LineTrajectory traj = static_trajectory();
+  ImuSample imu = traj.next();
+  imu.header.time_ns = last_imu_ns + 600'000'000;  // 0.6 s > 0.5 s
+  e.process(imu);
+  EXPECT_EQ(e.time_gap_restarts(), 1u);
+  EXPECT_EQ(e.divergence_restarts(), 0u);
+  EXPECT_EQ(e.stats().resets, 2u);
+
+  // A 1 m fix cannot hold the position within 0.1 m: once navigating, the filter is "lost".
+  FilterOptions tight = options_with_heading();
+  tight.divergence_position_std_m = 0.1;
+  Engine d{tight};
+  for (const auto& m : make_static_stream(10.0, true).items) d.process(m);
+  EXPECT_GE(d.divergence_restarts(), 1u);
+  EXPECT_EQ(d.time_gap_restarts(), 0u);
+  EXPECT_EQ(d.stats().resets, d.divergence_restarts());
+}
+
+// Run-time switches (MIP 0x0D,0x63 and 0x0D,0x50 on a device link): driving north at 10 m/s
+// with 5 Hz GNSS, the non-holonomic constraint applies until switched off, and GNSS positions
+// are fused until their aiding is switched off (then counted as ignored), and again once back on.
+TEST(Engine, NonholonomicConstraintAndAidingSwitchAtRunTime) {
+  FilterOptions o;
+  o.initial_heading_rad = 0.0;
+  Engine e{o};
+  test::LineTrajectory traj({kLat, 0.1, 200.0}, Eigen::Vector3d(10.0, 0.0, 0.0), Eigen::Vector3d::Zero(), 200.0);
+  std::mt19937_64 rng(5);
+  const auto drive = [&](double seconds) {
+    const int n = static_cast<int>(seconds * 200.0);
+    for (int k = 1; k <= n; ++k) {
+      e.process(traj.next());
+      if (k % 40 == 0) {
+        e.process(test::make_fix(traj.truth(), Eigen::Vector3d::Zero(), 1.0, &rng));
+        e.process(test::make_velocity(traj.truth(), 0.05, &rng));
+      }
+    }
+  };
+  drive(10.0);
+  ASSERT_EQ(e.solution().mode, NavMode::kNavigation);
+  const std::uint64_t nhc = e.stats().nhc_updates;
+  EXPECT_GT(nhc, 0u);
+  e.set_nonholonomic(false);
+  drive(2.0);
+  EXPECT_EQ(e.stats().nhc_updates, nhc);
+  e.set_nonholonomic(true);
+  drive(2.0);
+  EXPECT_GT(e.stats().nhc_updates, nhc);
+
+  const KindStats before = e.stats().of(MeasurementKind::kGnssPosition);
+  e.set_aiding(MeasurementKind::kGnssPosition, false);
+  EXPECT_FALSE(e.fuses(MeasurementKind::kGnssPosition));
+  drive(2.0);  // 10 fixes
+  const KindStats off = e.stats().of(MeasurementKind::kGnssPosition);
+  EXPECT_EQ(off.used, before.used);
+  EXPECT_EQ(off.ignored, before.ignored + 10);
+  e.set_aiding(MeasurementKind::kGnssPosition, true);
+  drive(2.0);
+  // 10 more fixes; the newest may still wait for the IMU to reach its time.
+  EXPECT_GE(e.stats().of(MeasurementKind::kGnssPosition).used, before.used + 9);
+  e.set_aiding(MeasurementKind::kImu, false);  // not aiding: stays on
+  EXPECT_TRUE(e.fuses(MeasurementKind::kImu));
+}
+
+// MIP 0x0D,0x03 on a device link: a heading given before levelling is taken at levelling, one
+// given while levelled without a heading at once; with a heading known it is ignored.
+TEST(Engine, InitialHeadingCommandAlignsAnUnalignedFilter) {
+  for (const bool before_levelling : {true, false}) {
+    Engine e{FilterOptions{}};
+    const Stream s = make_static_stream(6.0, false);  // IMU only: levelled after 1 s, no heading
+    if (before_levelling) {
+      EXPECT_TRUE(e.set_initial_heading(1.0));
+    }
+    const std::size_t half = s.items.size() / 2;
+    for (std::size_t i = 0; i < s.items.size(); ++i) {
+      if (i == half && !before_levelling) {
+        ASSERT_EQ(e.solution().mode, NavMode::kVerticalGyro);
+        EXPECT_TRUE(e.set_initial_heading(1.0));
+      }
+      e.process(s.items[i]);
+    }
+    EXPECT_NE(e.solution().mode, NavMode::kVerticalGyro) << before_levelling;
+    // The IMU's own heading is kRpy.z() (30 deg): the filter holds what it was told instead.
+    EXPECT_NEAR(e.solution().rpy_rad.z(), 1.0, 0.01) << before_levelling;
+    EXPECT_FALSE(e.set_initial_heading(-1.0));  // aligned: ignored
+    EXPECT_NEAR(e.solution().rpy_rad.z(), 1.0, 0.01);
+  }
+}
+
 }  // namespace
 }  // namespace navfuse::filter

@@ -5,7 +5,8 @@
 // replay writes to an --fe-out file for the same epochs, plus the device's 1 s CalibrationStatus
 // and SystemStatus. Everything on the link, command responses included, is numbered by one
 // sequence counter (spec L190); VersionInfo comes from the build; resets and configuration
-// changes are announced as EventNotifications (spec L2615-2642).
+// changes are announced as EventNotifications (spec L2615-2642). Sensor inputs sent on the link
+// become measurements on the link's clock.
 #include <gtest/gtest.h>
 
 #include <sys/utsname.h>
@@ -18,6 +19,7 @@
 #include "apps/output/fe_epoch_encoder.hpp"
 #include "apps/run/fe_device_emulator.hpp"
 #include "frontends/fusionengine/config_types.hpp"
+#include "frontends/fusionengine/messages_sensor.hpp"
 #include "frontends/fusionengine/payload_reader.hpp"
 
 namespace navfuse::apps {
@@ -178,6 +180,55 @@ TEST(FeDeviceEmulator, StatusMessagesAtOneHertzUntilAClientTurnsThemOff) {
   EXPECT_EQ(r.count(fe::MessageType::kSystemStatus), 0u);
 }
 
+// The link's one rate table (apps/output/fe_stream_rates.hpp): spec example E11 (L1490-1497)
+// sets Pose on change and GetMessageRate reports it; a wildcard interval rate leaves messages
+// that are off alone unless INCLUDE_DISABLED_MESSAGES is set (L1470-1476).
+TEST(FeDeviceEmulator, MessageRatesFromTheSpecExampleAndTheWildcardRule) {
+  auto emulator = make_fe_device_emulator(config::Config{});
+  fe::FusionEngineWriter host;
+  const auto rate_of = [&](fe::MessageType type) {
+    fe::GetMessageRateMessage get;
+    get.protocol = static_cast<std::uint8_t>(fe::ProtocolType::kFusionEngine);
+    get.message_id = fe::to_u16(type);
+    std::vector<std::uint8_t> reply;
+    CommandEffects effects;
+    emulator->receive(1, host.frame(get), reply, effects);
+    const Reply r = parse_reply(reply);
+    fe::MessageRateResponseMessage m;
+    EXPECT_EQ(r.types.size(), 1u);
+    EXPECT_TRUE(!r.payloads.empty() && fe::decode_payload(r.payloads[0], m));
+    return m.rates.size() == 1 ? m.rates[0].configured_rate : std::uint8_t{0xEE};
+  };
+  const auto set = [&](std::uint16_t id, fe::MessageRate rate, std::uint8_t flags) {
+    fe::SetMessageRateMessage m;
+    m.protocol = static_cast<std::uint8_t>(fe::ProtocolType::kFusionEngine);
+    m.message_id = id;
+    m.rate = static_cast<std::uint8_t>(rate);
+    m.flags = flags;
+    std::vector<std::uint8_t> reply;
+    CommandEffects effects;
+    emulator->receive(1, host.frame(m), reply, effects);
+  };
+  const std::vector<std::uint8_t> e11 = {0x2e, 0x31, 0x00, 0x00, 0x6a, 0x84, 0x77, 0x24, 0x02, 0x00, 0xa4, 0x33,
+                                         0x00, 0x00, 0x00, 0x00, 0x0c, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+                                         0x01, 0x01, 0x00, 0x00, 0x01, 0x00, 0x10, 0x27, 0x01, 0x00, 0x00, 0x00};
+  std::vector<std::uint8_t> reply;
+  CommandEffects effects;
+  emulator->receive(1, e11, reply, effects);
+  const Reply r = parse_reply(reply);
+  ASSERT_EQ(r.types.size(), 1u);
+  ASSERT_EQ(r.types[0], fe::to_u16(fe::MessageType::kCommandResponse));
+  EXPECT_EQ(r.payloads[0][4], static_cast<std::uint8_t>(fe::Response::kOk));
+  EXPECT_EQ(rate_of(fe::MessageType::kPose), static_cast<std::uint8_t>(fe::MessageRate::kOnChange));
+
+  set(fe::to_u16(fe::MessageType::kPoseAux), fe::MessageRate::kOff, 0);
+  set(fe::kAllMessages, fe::MessageRate::k1S, 0);
+  EXPECT_EQ(rate_of(fe::MessageType::kPose), static_cast<std::uint8_t>(fe::MessageRate::k1S));
+  EXPECT_EQ(rate_of(fe::MessageType::kPoseAux), static_cast<std::uint8_t>(fe::MessageRate::kOff));
+  set(fe::kAllMessages, fe::MessageRate::k1S, fe::kRateFlagIncludeDisabled);
+  EXPECT_EQ(rate_of(fe::MessageType::kPoseAux), static_cast<std::uint8_t>(fe::MessageRate::k1S));
+}
+
 // The fault the issue names: configuration responses came from a second writer (sequence 0,
 // 1, ... beside the stream's). Stream, responses of every kind, stream again: one counter.
 TEST(FeDeviceEmulator, OneSequenceCounterForStreamAndEveryResponse) {
@@ -293,6 +344,108 @@ TEST(FeDeviceEmulator, ResetAndConfigChangeAreAnnounced) {
   streamed.clear();
   emulator->stream(epoch_at(1), streamed);
   EXPECT_EQ(parse_reply(streamed).count(fe::MessageType::kEventNotification), 0u) << "sent once";
+}
+
+
+// A VehicleSpeedInput cut to 4 bytes of its 28 (a client with a wrong layout).
+struct TruncatedSpeedInput {
+  static constexpr fe::MessageType kType = fe::MessageType::kVehicleSpeedInput;
+  static constexpr std::uint8_t kVersion = 0;
+  std::uint32_t head = 0;
+  template <class V>
+  void visit(V& v) {
+    v.field("head", head);
+  }
+};
+
+TEST(FeDeviceEmulator, SensorInputsOnTheLinkBecomeMeasurementsOnTheStreamsClock) {
+  auto emulator = make_fe_device_emulator(config::Config{});
+  std::vector<std::uint8_t> out;
+  emulator->stream(epoch_at(10), out);  // the link's newest epoch: 2.0 s
+  fe::FusionEngineWriter host;
+
+  // P1 time is the link's own (navfuse's GPS time); the Output P1 Time a sender fills in is
+  // ignored (spec L302).
+  fe::VehicleSpeedInputMessage p1;
+  p1.details.time_source = static_cast<std::uint8_t>(fe::SystemTimeSource::kP1Time);
+  p1.details.measurement_time = fe::Timestamp{1, 500'000'000};
+  p1.details.p1_time = fe::Timestamp{99, 0};
+  p1.speed = 2560;  // 2.5 m/s at 2^-10 m/s
+  // No time: timestamped on arrival, at the newest epoch's time.
+  fe::WheelSpeedInputMessage on_arrival;
+  on_arrival.speed = {1024, 2048, fe::kInvalidI32, 4096};
+  // The sender's own clock stays its own: the filter rejects it (time_base).
+  fe::VehicleTickInputMessage sender;
+  sender.details.time_source = static_cast<std::uint8_t>(fe::SystemTimeSource::kSenderSystemTime);
+  sender.details.measurement_time = fe::Timestamp{7, 0};
+  sender.ticks = 1234;
+
+  std::vector<std::uint8_t> bytes;
+  host.append(p1, bytes);
+  host.append(on_arrival, bytes);
+  host.append(sender, bytes);
+  host.append(TruncatedSpeedInput{}, bytes);
+  std::vector<std::uint8_t> reply;
+  CommandEffects effects;
+  emulator->receive(1, bytes, reply, effects);
+
+  EXPECT_TRUE(reply.empty());  // inputs are not commands: no CommandResponse
+  EXPECT_TRUE(effects.actions.empty());
+  ASSERT_EQ(effects.aiding.size(), 3u);  // the truncated one is dropped
+  const auto* v = std::get_if<VehicleSpeed>(&effects.aiding[0]);
+  ASSERT_NE(v, nullptr);
+  EXPECT_EQ(v->header.time_ns, 1'500'000'000);
+  EXPECT_EQ(v->header.time_source, TimeSource::kGps);
+  EXPECT_DOUBLE_EQ(v->speed_mps, 2.5);
+  const auto* w = std::get_if<WheelSpeeds>(&effects.aiding[1]);
+  ASSERT_NE(w, nullptr);
+  EXPECT_EQ(w->header.time_ns, 2'000'000'000);
+  EXPECT_EQ(w->header.time_source, TimeSource::kGps);
+  EXPECT_DOUBLE_EQ(w->speed_mps[0], 1.0);
+  EXPECT_DOUBLE_EQ(w->speed_mps[1], 2.0);
+  EXPECT_DOUBLE_EQ(w->speed_mps[3], 4.0);
+  EXPECT_EQ(w->header.valid & WheelSpeeds::kValidRearLeft, 0u);
+  const auto* t = std::get_if<WheelTicks>(&effects.aiding[2]);
+  ASSERT_NE(t, nullptr);
+  EXPECT_EQ(t->header.time_ns, 7'000'000'000);
+  EXPECT_EQ(t->header.time_source, TimeSource::kDeviceMonotonic);
+  EXPECT_EQ(t->ticks[0], 1234u);
+}
+
+TEST(FeDeviceEmulator, RestartsOfTheFiltersOwnAreAnnouncedOnceEach) {
+  auto emulator = make_fe_device_emulator(config::Config{});
+  auto file = make_fe_device_emulator(config::Config{}, false);
+  std::vector<std::uint8_t> out, file_out;
+  const auto stream = [&](int k, std::uint64_t time_gaps, std::uint64_t divergences) {
+    OutputEpoch e = epoch_at(k);
+    e.time_gap_restarts = time_gaps;
+    e.divergence_restarts = divergences;
+    emulator->stream(e, out);
+    file->stream(e, file_out);
+  };
+  stream(0, 0, 0);
+  stream(1, 1, 0);  // an IMU gap restarted the filter before this epoch
+  stream(2, 1, 0);
+  stream(3, 1, 2);  // two divergences since the last epoch: one event says it
+  stream(4, 1, 2);
+
+  std::vector<std::string> descriptions;
+  const Reply reply = parse_reply(out);
+  for (std::size_t i = 0; i < reply.types.size(); ++i) {
+    const auto& p = reply.payloads[i];
+    if (reply.types[i] != fe::to_u16(fe::MessageType::kEventNotification)) continue;
+    ASSERT_GE(p.size(), 24u);
+    EXPECT_EQ(p[0], 0x01);  // RESET (spec L2635)
+    std::uint64_t flags = 0;
+    std::memcpy(&flags, p.data() + 12, 8);
+    EXPECT_EQ(flags, std::uint64_t{fe::reset::kResetNavigationEngineData});
+    descriptions.emplace_back(p.begin() + 24, p.end());
+  }
+  ASSERT_EQ(descriptions.size(), 2u);
+  EXPECT_NE(descriptions[0].find("IMU time gap"), std::string::npos) << descriptions[0];
+  EXPECT_NE(descriptions[1].find("diverged"), std::string::npos) << descriptions[1];
+  // A file is what replay writes: no events.
+  EXPECT_EQ(parse_reply(file_out).count(fe::MessageType::kEventNotification), 0u);
 }
 
 }  // namespace

@@ -120,41 +120,28 @@ TEST(FeDeviceControl, InvalidRequestsGetTheSpecsErrorCodes) {
   EXPECT_EQ(dc.config().gnss.lever_arm_m, (config::Vec3{0, 0, 0}));
 }
 
-TEST(FeDeviceControl, MessageRatesResetAndVersion) {
+TEST(FeDeviceControl, ResetVersionAndNoRateTableOfItsOwn) {
   DeviceControl dc(config::Config{});
   FusionEngineWriter host;
-  // Spec example E11 (L1490-1497): Pose on change on UART1.
+  // Spec example E11 (L1490-1497): rates belong to the stream that applies them (the --fe-out
+  // link, apps/output/fe_stream_rates.hpp), not to this handler.
   const auto e11 = test::from_hex("2e31 0000 6a84 7724 0200 a433 0000 0000 0c00 0000 0000 0000 0101 0000 0100 1027 0100 0000");
-  EXPECT_EQ(code_of(send(dc, e11), 0), static_cast<std::uint8_t>(Response::kOk));
-  EXPECT_EQ(dc.rate(to_u16(MessageType::kPose)), MessageRate::kOnChange);
-  EXPECT_EQ(dc.config().output.rate_hz, 0.0);  // every IMU sample
-  SetMessageRateMessage r;
-  r.protocol = static_cast<std::uint8_t>(ProtocolType::kFusionEngine);
-  r.message_id = to_u16(MessageType::kPose);
-  r.rate = static_cast<std::uint8_t>(MessageRate::k50Ms);
-  EXPECT_EQ(code_of(send(dc, host.frame(r)), 0), static_cast<std::uint8_t>(Response::kOk));
-  EXPECT_DOUBLE_EQ(dc.config().output.rate_hz, 20.0);
-  GetMessageRateMessage g;
-  g.protocol = static_cast<std::uint8_t>(ProtocolType::kFusionEngine);
-  g.message_id = to_u16(MessageType::kPose);
-  const Reply gr = send(dc, host.frame(g));
-  ASSERT_EQ(gr.frames.size(), 1u);
-  const auto rates = payload_as<MessageRateResponseMessage>(gr.frames[0]);
-  ASSERT_EQ(rates.rates.size(), 1u);
-  EXPECT_EQ(rates.rates[0].configured_rate, static_cast<std::uint8_t>(MessageRate::k50Ms));
-  EXPECT_EQ(rates.rates[0].flags, 1);  // differs from saved
-  r.protocol = static_cast<std::uint8_t>(ProtocolType::kNmea);
-  EXPECT_EQ(code_of(send(dc, host.frame(r)), 2), static_cast<std::uint8_t>(Response::kUnsupportedFeature));
+  EXPECT_EQ(code_of(send(dc, e11), 0), static_cast<std::uint8_t>(Response::kUnsupportedFeature));
 
   // Digest §12.3 cold start (0x00000FFF): reported for the nav process to act on.
   const auto cold = test::from_hex("2e31 0000 9cff e9f8 0200 ca32 0000 0000 0400 0000 0000 0000 ff0f 0000");
   EXPECT_EQ(code_of(send(dc, cold), 0), static_cast<std::uint8_t>(Response::kOk));
   EXPECT_EQ(dc.take_reset_request(), reset::kColdStart);
   EXPECT_FALSE(dc.take_reset_request());
-  // Factory reset (E2) includes RESET_CONFIG: rates and config back to defaults.
+  // Factory reset (E2) includes RESET_CONFIG: configuration back to defaults.
+  SetConfigMessage set;
+  set.config_type = to_u16(ConfigType::kGnssLeverArm);
+  set.value = pack_config(Point3f{{0.5f, 0.0f, 1.0f}});
+  EXPECT_EQ(code_of(send(dc, host.frame(set)), 0), static_cast<std::uint8_t>(Response::kOk));
+  EXPECT_EQ(dc.config().gnss.lever_arm_m, (config::Vec3{0.5, 0, -1}));
   const auto factory = test::from_hex("2e31 0000 b39e 0bf3 0200 ca32 0000 0000 0400 0000 0000 0000 ffff ffff");
   EXPECT_EQ(code_of(send(dc, factory), 0), static_cast<std::uint8_t>(Response::kOk));
-  EXPECT_EQ(dc.rate(to_u16(MessageType::kPose)), MessageRate::k100Ms);
+  EXPECT_EQ(dc.config().gnss.lever_arm_m, (config::Vec3{0, 0, 0}));
 
   MessageRequestMessage req;
   req.message_type = to_u16(MessageType::kVersionInfo);
