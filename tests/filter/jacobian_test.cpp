@@ -13,6 +13,7 @@
 //
 // Entries of a block a model leaves out on purpose (its kNeglected list, with the reason) are held
 // only to the bound stated there; every other entry must agree to the differencing accuracy.
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -384,8 +385,13 @@ constexpr std::array<NeglectedTerm, 2> kIntegrationScheme{{
      "transport rate of the velocity change within the step, |f| T / (2 R) <= 4e-9"},
 }};
 
+// The largest entry of the 3 x 3 state block holding (i, j); a trailing block may be narrower
+// (the single GNSS time-offset state after the 3-wide groups).
 double block_max(const Eigen::MatrixXd& m, int i, int j) {
-  return m.block(i / 3 * 3, j / 3 * 3, 3, 3).cwiseAbs().maxCoeff();
+  const Eigen::Index row = i / 3 * 3, col = j / 3 * 3;
+  return m.block(row, col, std::min<Eigen::Index>(3, m.rows() - row), std::min<Eigen::Index>(3, m.cols() - col))
+      .cwiseAbs()
+      .maxCoeff();
 }
 
 void expect_close_f(const Eigen::MatrixXd& model, const Eigen::MatrixXd& numeric, double t,
