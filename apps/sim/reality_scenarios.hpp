@@ -9,6 +9,10 @@
 //   urban_multipath  rtk_drive with two urban segments (300-500 s, 950-1100 s) of multipath jumps
 //                    of 0.2-3 m lasting 1-5 s while the receiver still reports RTK-fixed 2 cm.
 //   real_drive       rtk_drive with all three.
+//   parking_drive    the held-out car drive of issue 14 as far as it is described: ~9 minutes,
+//                    tight car-park corners at 4 m/s and a road stretch, ADIS16465-class IMU at
+//                    100 Hz with car vibration, 4 Hz RTK (99.6 % fixed), no wheel speed, IMU
+//                    clock 125 ms behind GNSS (stamps late).
 #pragma once
 
 #include <optional>
@@ -23,6 +27,10 @@ namespace navfuse::sim {
 std::vector<GnssFixInterval> rtk_fix_change_schedule();
 // The urban segments of urban_multipath (seconds since the start).
 std::vector<TimeInterval> urban_segments();
+
+// The IMU clock offset of parking_drive (ImuSpec::time_offset_s: stamps 125 ms late).
+inline constexpr double kParkingImuTimeOffset_s = -0.125;
+Scenario parking_drive();
 
 std::vector<std::string_view> reality_scenario_names();
 std::optional<Scenario> find_reality_scenario(std::string_view name);

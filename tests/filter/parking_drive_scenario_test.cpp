@@ -1,0 +1,92 @@
+// Issue 14, the held-out car drive as far as the issue describes it (apps/sim/reality_scenarios.hpp
+// parking_drive): tight car-park corners, 4 Hz RTK, an ADIS16465-class IMU at 100 Hz with car
+// vibration, its clock 125 ms behind GNSS, no wheel speed, and the IMU's data-sheet noise in the
+// config (test::options_for: not inflated for the vibration). What the issue holds navfuse to on
+// that drive: at least 98 % of the fixes used, no dead reckoning while fixes arrive, and at least
+// KF-GINS's accuracy with the same noise figures (0.11 m horizontal RMS against the fixes).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "apps/sim/reality_scenarios.hpp"
+#include "tests/filter/scenario_harness.hpp"
+
+namespace navfuse::filter {
+namespace {
+
+using test::Epoch;
+using test::Rms;
+
+struct ParkingResult {
+  Rms horizontal;                 // at the IMU point, navigating epochs after alignment
+  std::uint64_t fixes = 0;        // GNSS positions delivered to the engine
+  std::uint64_t fixes_used = 0;
+  std::uint64_t fixes_before_levelling = 0;  // rejected as not aligned
+  std::uint64_t dead_reckoning_epochs = 0;  // after the first navigation epoch
+  double first_navigation_s = -1.0;
+};
+
+ParkingResult run_parking(const FilterOptions& o) {
+  const sim::Scenario s = sim::parking_drive();
+  ParkingResult r;
+  const auto summary = test::run_scenario(
+      s, o,
+      [&](const Epoch& e) {
+        const NavMode m = e.engine->solution().mode;
+        if (m == NavMode::kNavigation && r.first_navigation_s < 0.0) r.first_navigation_s = e.t_s;
+        if (r.first_navigation_s < 0.0) return;
+        if (m == NavMode::kDeadReckoning) ++r.dead_reckoning_epochs;
+        if (m == NavMode::kNavigation || m == NavMode::kDeadReckoning) r.horizontal.add(e.horizontal_m());
+      },
+      [&](Measurement& m) {
+        if (kind_of(m) == MeasurementKind::kGnssPosition) ++r.fixes;
+        return true;
+      });
+  const auto& gnss = summary.stats.of(MeasurementKind::kGnssPosition);
+  r.fixes_used = gnss.used;
+  r.fixes_before_levelling = gnss.rejected_for(RejectReason::kNotAligned);
+  std::printf("parking drive (%s): navigation from %.1f s, horizontal RMS %.4f m over %zu epochs; fixes "
+              "%llu, used %llu (%.2f %%), rejected %llu (%llu before levelling); dead-reckoning epochs %llu; max process-noise "
+              "scale %.1f; re-inflations %llu\n",
+              o.land_vehicle ? "land" : "generic", r.first_navigation_s, r.horizontal.value(), r.horizontal.n,
+              static_cast<unsigned long long>(r.fixes), static_cast<unsigned long long>(r.fixes_used),
+              100.0 * static_cast<double>(r.fixes_used) / static_cast<double>(r.fixes),
+              static_cast<unsigned long long>(gnss.rejected_total()),
+              static_cast<unsigned long long>(r.fixes_before_levelling), static_cast<unsigned long long>(r.dead_reckoning_epochs), summary.stats.max_process_noise_scale,
+              static_cast<unsigned long long>(summary.stats.covariance_inflations));
+  return r;
+}
+
+// The config a user writes for that rig: the data sheet, the lever arm, the mounting and the
+// IMU's time offset; platform generic (the walk's config has no platform key) or land.
+FilterOptions parking_options(bool land) {
+  const sim::Scenario s = sim::parking_drive();
+  FilterOptions o = test::options_for(s);
+  o.imu_time_offset_s = sim::kParkingImuTimeOffset_s;
+  o.land_vehicle = land;
+  o.course_alignment = land;
+  return o;
+}
+
+void expect_held_out_goals(const ParkingResult& r) {
+  // The engine's vibration keeps the specific-force scatter above the quiet threshold while the
+  // car stands: levelled within 2 s anyway because GNSS shows it at rest (filter/alignment.cpp),
+  // not after level_timeout_s (10 s, 40 fixes).
+  EXPECT_LE(r.fixes_before_levelling, 8u);
+  EXPECT_GT(r.first_navigation_s, 0.0);
+  EXPECT_LT(r.first_navigation_s, 60.0);  // self-aligned once moving (starts at 30 s)
+  EXPECT_GE(static_cast<double>(r.fixes_used), 0.98 * static_cast<double>(r.fixes));
+  EXPECT_EQ(r.dead_reckoning_epochs, 0u);
+  EXPECT_LE(r.horizontal.value(), 0.05);
+}
+
+TEST(ParkingDriveScenario, GenericPlatformUsesTheFixesThroughTightCorners) {
+  expect_held_out_goals(run_parking(parking_options(false)));
+}
+
+TEST(ParkingDriveScenario, LandPlatformUsesTheFixesThroughTightCorners) {
+  expect_held_out_goals(run_parking(parking_options(true)));
+}
+
+}  // namespace
+}  // namespace navfuse::filter
