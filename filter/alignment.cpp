@@ -4,6 +4,7 @@
 
 #include "core/geodesy/geodesy.hpp"
 #include "core/rotation/rotation.hpp"
+#include "filter/control/stationary_control.hpp"
 #include "filter/measurements/gnss_position.hpp"
 
 namespace navfuse::filter {
@@ -77,7 +78,11 @@ void feed_leveller(FilterCore& c, const FilterOptions& o, const ImuIncrement& ra
   const Eigen::Vector3d mean_w = l.window_dtheta / l.window_time_s;
   const double scatter =
       std::sqrt(std::max(0.0, l.window_f_sq / l.window_count - mean_f.squaredNorm()));
-  const bool quiet = mean_w.norm() < o.stationary_gyro_rps && scatter < o.stationary_accel_std_mps2;
+  // Engine and road vibration raise the scatter of a standing car far above the quiet threshold
+  // (tens of times the data-sheet noise): with a speed measurement showing it at rest, levelling need not wait for
+  // level_timeout_s. The mean over the window still averages the vibration out.
+  const bool quiet = mean_w.norm() < o.stationary_gyro_rps &&
+                     (scatter < o.stationary_accel_std_mps2 || speed_shows_rest(c, o));
   if (quiet) {
     l.static_time_s += l.window_time_s;
     l.dvel_sum += l.window_dvel;

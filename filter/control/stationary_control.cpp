@@ -25,6 +25,14 @@ bool speed_evidence_allows_rest(const FilterCore& c, const FilterOptions& o) {
 
 }  // namespace
 
+bool speed_shows_rest(const FilterCore& c, const FilterOptions& o) {
+  const double limit = 0.5 * o.stationary_max_speed_mps;
+  if (seconds_since(c.x.time_ns, c.odometry.last_speed_ns) < kSpeedEvidenceAge_s) {
+    return std::abs(c.odometry.last_speed_mps) < limit;
+  }
+  return seconds_since(c.x.time_ns, c.gnss.last_speed_ns) < kSpeedEvidenceAge_s && c.gnss.last_speed_mps < limit;
+}
+
 void update_stationary(FilterCore& c, const FilterOptions& o, const ImuIncrement& raw) {
   StationaryState& s = c.stationary;
   s.window_time_s += raw.dt_s;

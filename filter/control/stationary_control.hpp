@@ -12,4 +12,10 @@ namespace navfuse::filter {
 
 void update_stationary(FilterCore& core, const FilterOptions& o, const ImuIncrement& raw);
 
+// A fresh speed measurement (within the last 0.5 s; the odometer's if there is one, else GNSS
+// horizontal speed) puts the vehicle at rest: below half of zupt.max_speed_mps. What tells a car
+// standing with its engine running (specific-force scatter far above the quiet threshold) from one
+// that moves.
+bool speed_shows_rest(const FilterCore& core, const FilterOptions& o);
+
 }  // namespace navfuse::filter
