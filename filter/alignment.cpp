@@ -78,12 +78,27 @@ void feed_leveller(FilterCore& c, const FilterOptions& o, const ImuIncrement& ra
   const Eigen::Vector3d mean_w = l.window_dtheta / l.window_time_s;
   const double scatter =
       std::sqrt(std::max(0.0, l.window_f_sq / l.window_count - mean_f.squaredNorm()));
-  // Engine and road vibration raise the scatter of a standing car far above the quiet threshold
-  // (tens of times the data-sheet noise): with a speed measurement showing it at rest, levelling need not wait for
-  // level_timeout_s. The mean over the window still averages the vibration out.
-  const bool quiet = mean_w.norm() < o.stationary_gyro_rps &&
-                     (scatter < o.stationary_accel_std_mps2 || speed_shows_rest(c, o));
-  if (quiet) {
+  // Levelling needs the specific force to be gravity alone: no acceleration, which a quiet IMU
+  // (small rate and specific-force scatter) shows. Engine and road vibration raise the scatter of
+  // a standing car far above the quiet threshold (tens of times the data-sheet noise), so two more
+  // kinds of evidence count: a speed measurement showing the vehicle at rest (then as good as
+  // quiet), and a window mean of the specific force that stays where the previous window's was
+  // (the vibration averages out; constant-velocity motion passes too, harmless for the tilt, so
+  // the velocity is then not taken as zero).
+  const bool rate_quiet = mean_w.norm() < o.stationary_gyro_rps;
+  const bool at_rest = rate_quiet && (scatter < o.stationary_accel_std_mps2 || speed_shows_rest(c, o));
+  // Against the run's first window, so that a slow ramp of acceleration does not pass.
+  const Eigen::Vector3d& reference = l.static_time_s > 0.0 ? l.run_reference_force : l.previous_mean_force;
+  const bool steady = rate_quiet && l.have_previous_mean &&
+                      (mean_f - reference).norm() < 2.0 * o.stationary_accel_std_mps2;
+  l.have_previous_mean = true;
+  l.previous_mean_force = mean_f;
+  if (at_rest || steady) {
+    if (l.static_time_s == 0.0) {
+      l.run_at_rest = true;
+      l.run_reference_force = mean_f;
+    }
+    l.run_at_rest = l.run_at_rest && at_rest;
     l.static_time_s += l.window_time_s;
     l.dvel_sum += l.window_dvel;
     l.dtheta_sum += l.window_dtheta;
@@ -100,7 +115,7 @@ void feed_leveller(FilterCore& c, const FilterOptions& o, const ImuIncrement& ra
   l.window_count = 0;
 
   if (l.static_time_s >= o.level_time_s) {
-    level(c, o, l.dvel_sum / l.static_time_s, l.static_time_s, true);
+    level(c, o, l.dvel_sum / l.static_time_s, l.static_time_s, l.run_at_rest);
   } else if (l.since_start_s >= o.level_timeout_s) {
     level(c, o, mean_f, window_time, false);
   }

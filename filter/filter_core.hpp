@@ -53,6 +53,13 @@ struct Leveller {
   double window_f_sq = 0.0;
   int window_count = 0;
   double since_start_s = 0.0;
+  // The previous window's mean specific force, the current run's first, and whether every window
+  // of the run was quiet by the scatter or by speed evidence (true) rather than by a steady mean
+  // force alone (alignment.cpp).
+  bool have_previous_mean = false;
+  Eigen::Vector3d previous_mean_force = Eigen::Vector3d::Zero();
+  Eigen::Vector3d run_reference_force = Eigen::Vector3d::Zero();
+  bool run_at_rest = true;
 };
 
 // Stationary detector (control/stationary_control.cpp).
@@ -90,6 +97,15 @@ struct GnssControlState {
   GnssPosition latest_fix;
   std::int64_t last_speed_ns = INT64_MIN;
   double last_speed_mps = 0.0;  // GNSS ground speed, for stationary detection
+  std::int64_t last_receiver_velocity_ns = INT64_MIN;  // last GnssVelocity input of any receiver
+  // The previous fix of the primary receiver and the velocity-matching force integral at it: the
+  // velocity from two fixes aligns the heading when the receiver reports no velocity
+  // (control/gnss_heading_alignment.hpp).
+  struct PairedFix {
+    GnssPosition fix;
+    Eigen::Vector2d force_integral_mps = Eigen::Vector2d::Zero();
+  };
+  std::optional<PairedFix> previous_primary_fix;
 };
 
 // The latest count of one tick stream (input stream and channel count), kept to difference the

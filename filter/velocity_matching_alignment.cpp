@@ -10,25 +10,27 @@ void accumulate_velocity_match(VelocityMatchWindow& w, const Eigen::Matrix3d& c_
   w.force_integral_mps += (c_nb * dvel_b_mps).head<2>();
 }
 
-void restart_velocity_match(VelocityMatchWindow& w, std::int64_t t_ns, const Eigen::Vector2d& vel_ne_mps) {
+void restart_velocity_match(VelocityMatchWindow& w, std::int64_t t_ns, const Eigen::Vector2d& vel_ne_mps,
+                            const std::optional<Eigen::Vector2d>& force_integral_mps) {
   const Eigen::Vector2d u = w.force_integral_mps;
   w = VelocityMatchWindow{};
   w.force_integral_mps = u;
   w.started = true;
   w.start_ns = t_ns;
-  w.u0 = u;
+  w.u0 = force_integral_mps.value_or(u);
   w.v0 = vel_ne_mps;
 }
 
 std::optional<HeadingEstimate> add_velocity_match(VelocityMatchWindow& w, const FilterOptions& o,
                                                   std::int64_t t_ns, const Eigen::Vector2d& vel_ne_mps,
-                                                  double vel_var_m2ps2) {
+                                                  double vel_var_m2ps2,
+                                                  const std::optional<Eigen::Vector2d>& force_integral_mps) {
   if (!w.started || static_cast<double>(t_ns - w.start_ns) * 1e-9 > o.velocity_match_window_s) {
     // A long window lets tilt and bias errors pile up in u: start again from here.
-    restart_velocity_match(w, t_ns, vel_ne_mps);
+    restart_velocity_match(w, t_ns, vel_ne_mps, force_integral_mps);
     return std::nullopt;
   }
-  const Eigen::Vector2d du = w.force_integral_mps - w.u0;
+  const Eigen::Vector2d du = force_integral_mps.value_or(w.force_integral_mps) - w.u0;
   const Eigen::Vector2d dv = vel_ne_mps - w.v0;
   w.sum_dot += du.dot(dv);
   w.sum_cross += du.x() * dv.y() - du.y() * dv.x();

@@ -52,13 +52,19 @@ void accumulate_velocity_match(VelocityMatchWindow& w, const Eigen::Matrix3d& c_
                                const Eigen::Vector3d& dvel_b_mps);
 
 // Starts the window again at this GNSS velocity (at rest, or after a window that did not settle).
-void restart_velocity_match(VelocityMatchWindow& w, std::int64_t t_ns, const Eigen::Vector2d& vel_ne_mps);
+// `force_integral_mps`: u at the velocity's time when that is not the current IMU time (see
+// add_velocity_match); nullopt: the window's running u.
+void restart_velocity_match(VelocityMatchWindow& w, std::int64_t t_ns, const Eigen::Vector2d& vel_ne_mps,
+                            const std::optional<Eigen::Vector2d>& force_integral_mps = std::nullopt);
 
 // Adds one GNSS horizontal velocity (with its per-axis variance) taken at the current IMU time;
 // returns the heading rotation once the fit is good enough (std below
-// o.velocity_match_max_std_rad with at least o.velocity_match_min_samples samples).
+// o.velocity_match_max_std_rad with at least o.velocity_match_min_samples samples). A velocity
+// that is a mean over an interval (two fixes differenced) pairs with the mean of u over that
+// interval, given as `force_integral_mps`.
 std::optional<HeadingEstimate> add_velocity_match(VelocityMatchWindow& w, const FilterOptions& o,
                                                   std::int64_t t_ns, const Eigen::Vector2d& vel_ne_mps,
-                                                  double vel_var_m2ps2);
+                                                  double vel_var_m2ps2,
+                                                  const std::optional<Eigen::Vector2d>& force_integral_mps = std::nullopt);
 
 }  // namespace navfuse::filter

@@ -5,10 +5,9 @@
 #include <utility>
 
 #include "core/rotation/rotation.hpp"
-
-#include "core/rotation/rotation.hpp"
 #include "filter/alignment.hpp"
 #include "filter/control/baseline_check.hpp"
+#include "filter/control/gnss_heading_alignment.hpp"
 #include "filter/measurements/gnss_heading.hpp"
 #include "filter/measurements/gnss_position.hpp"
 #include "filter/measurements/gnss_velocity.hpp"
@@ -21,8 +20,8 @@ bool has_position_fix(GnssFixType fix) {
          fix != GnssFixType::kDeadReckoning;
 }
 
-// A fix newer than this is used to place the filter when the heading becomes known.
-constexpr double kMaxPlacementAge_s = 1.0;
+// A receiver whose last velocity is older than this reports none: align from its fixes instead.
+constexpr double kReceiverVelocityAge_s = 1.0;
 
 // Tracks a run of rejections; true when it has lasted long enough to re-anchor.
 bool sustained_rejection(std::int64_t now, std::int64_t& reject_since, std::int64_t last_accepted,
@@ -42,6 +41,12 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
   c.gnss.latest_fix = m;
   c.gnss.have_fix = true;
   c.gnss.last_fix = m.fix;
+  // This fix and the previous one of its receiver, with the velocity-matching force integral at
+  // each, for receivers that report no velocity.
+  std::optional<GnssControlState::PairedFix> previous;
+  if (m.receiver_id == 0) {
+    previous = std::exchange(c.gnss.previous_primary_fix, GnssControlState::PairedFix{m, c.velocity_match.force_integral_mps});
+  }
   if (!c.mode.levelled) return FuseResult::reject(RejectReason::kNotAligned);
   if (!c.mode.heading_known || !c.mode.position_known) {
     // The first fix places the filter. Without a heading the lever arm cannot be resolved and
@@ -49,6 +54,12 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
     // instead of filtering.
     place_at_fix(c, o, m);
     c.gnss.last_position_ns = now;
+    if (!c.mode.heading_known && previous && seconds_since(now, c.gnss.last_receiver_velocity_ns) > kReceiverVelocityAge_s) {
+      if (auto v = velocity_from_fixes(o, previous->fix, previous->force_integral_mps, m,
+                                       c.velocity_match.force_integral_mps)) {
+        align_heading_from_velocity(c, o, *v, now);
+      }
+    }
     return FuseResult::ok();
   }
 
@@ -88,48 +99,21 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssVelocity& m,
   const double speed = m.vel_ned_mps.head<2>().norm();
   c.gnss.last_speed_mps = speed;
   c.gnss.last_speed_ns = now;
+  c.gnss.last_receiver_velocity_ns = now;
   if (!c.mode.levelled) return FuseResult::reject(RejectReason::kNotAligned);
   const Eigen::Matrix3d cov = o.gnss_velocity_std_scale * o.gnss_velocity_std_scale *
                               ((m.header.valid & GnssVelocity::kValidCovariance) != 0
                                    ? m.cov_ned_m2ps2
                                    : Eigen::Matrix3d(Eigen::Vector3d(0.01, 0.01, 0.04).asDiagonal()));
-  const double vel_var = 0.5 * (cov(0, 0) + cov(1, 1));
-  const double course_std = std::sqrt(vel_var) / speed;
+  const double course_std = std::sqrt(0.5 * (cov(0, 0) + cov(1, 1))) / speed;
   // A baseline found wrong: the heading it gave is not known after all; re-align from the course
   // below, at this epoch (the vehicle is moving fast enough, or it would not have been checked).
   if (c.mode.heading_known && check_baseline(c, o, m, course_std)) c.mode.heading_known = false;
   if (!c.mode.heading_known) {
-    // At rest the zero-velocity updates know the velocity better than GNSS, and a reset would
-    // cut the velocity-tilt correlation that keeps the levelling honest. The velocity-matching
-    // window starts again at every rest: only the motion after it carries heading information.
-    if (c.stationary.stationary && speed < o.stationary_max_speed_mps) {
-      restart_velocity_match(c.velocity_match, c.x.time_ns, m.vel_ned_mps.head<2>());
-      return FuseResult::reject(RejectReason::kNotAligned);
-    }
-    c.x.vel_ned_mps = m.vel_ned_mps;
-    c.ekf.reset_states(sx::kVel, cov);
-    c.gnss.last_velocity_ns = now;
-    std::optional<std::pair<double, double>> heading;  // yaw, std
-    if (auto fit = add_velocity_match(c.velocity_match, o, c.x.time_ns, m.vel_ned_mps.head<2>(), vel_var)) {
-      const double yaw = rot::rpy_from_quat(c.x.q_nb).z() + fit->rotation_rad;
-      heading.emplace(rot::wrap_pi(yaw), std::hypot(fit->std_rad, o.velocity_match_allowance_rad));
-    }
-    // Kinematic alignment (MIP §6.4): a land vehicle moving forward points along its course.
-    // The course noise is the horizontal velocity std over the speed; the yaw uncertainty adds
-    // an allowance for sideslip and mounting.
-    if (!heading && o.course_alignment && speed >= o.kinematic_alignment_speed_mps &&
-        course_std <= o.kinematic_max_course_std_rad) {
-      heading.emplace(std::atan2(m.vel_ned_mps.y(), m.vel_ned_mps.x()),
-                      std::hypot(course_std, o.kinematic_heading_std_rad));
-    }
-    if (heading) {
-      set_heading(c, heading->first, heading->second);
-      if (c.gnss.have_fix &&
-          std::abs(seconds_since(c.x.time_ns, c.gnss.latest_fix.header.time_ns)) < kMaxPlacementAge_s) {
-        place_at_fix(c, o, c.gnss.latest_fix);
-      }
-    }
-    return FuseResult::ok();
+    AlignmentVelocity v;
+    v.vel_ned_mps = m.vel_ned_mps;
+    v.cov_m2ps2 = cov;
+    return align_heading_from_velocity(c, o, v, now);
   }
 
   Observation obs = gnss_velocity_observation(

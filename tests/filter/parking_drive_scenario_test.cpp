@@ -26,8 +26,11 @@ struct ParkingResult {
   double first_navigation_s = -1.0;
 };
 
-ParkingResult run_parking(const FilterOptions& o) {
-  const sim::Scenario s = sim::parking_drive();
+// `receiver_velocity` false: the receiver reports positions only (an RTKLIB .pos without velocity
+// columns, as KF-GINS-style GNSS files are): the heading then comes from the fixes themselves.
+ParkingResult run_parking(const FilterOptions& o, bool receiver_velocity = true) {
+  sim::Scenario s = sim::parking_drive();
+  s.gnss.velocity = receiver_velocity;
   ParkingResult r;
   const auto summary = test::run_scenario(
       s, o,
@@ -45,10 +48,11 @@ ParkingResult run_parking(const FilterOptions& o) {
   const auto& gnss = summary.stats.of(MeasurementKind::kGnssPosition);
   r.fixes_used = gnss.used;
   r.fixes_before_levelling = gnss.rejected_for(RejectReason::kNotAligned);
-  std::printf("parking drive (%s): navigation from %.1f s, horizontal RMS %.4f m over %zu epochs; fixes "
+  std::printf("parking drive (%s, %s): navigation from %.1f s, horizontal RMS %.4f m over %zu epochs; fixes "
               "%llu, used %llu (%.2f %%), rejected %llu (%llu before levelling); dead-reckoning epochs %llu; max process-noise "
               "scale %.1f; re-inflations %llu\n",
-              o.land_vehicle ? "land" : "generic", r.first_navigation_s, r.horizontal.value(), r.horizontal.n,
+              o.land_vehicle ? "land" : "generic", receiver_velocity ? "GNSS velocity" : "positions only",
+              r.first_navigation_s, r.horizontal.value(), r.horizontal.n,
               static_cast<unsigned long long>(r.fixes), static_cast<unsigned long long>(r.fixes_used),
               100.0 * static_cast<double>(r.fixes_used) / static_cast<double>(r.fixes),
               static_cast<unsigned long long>(gnss.rejected_total()),
@@ -86,6 +90,11 @@ TEST(ParkingDriveScenario, GenericPlatformUsesTheFixesThroughTightCorners) {
 
 TEST(ParkingDriveScenario, LandPlatformUsesTheFixesThroughTightCorners) {
   expect_held_out_goals(run_parking(parking_options(true)));
+}
+
+TEST(ParkingDriveScenario, PositionOnlyFixesAlignAndHoldTheGoals) {
+  expect_held_out_goals(run_parking(parking_options(false), false));
+  expect_held_out_goals(run_parking(parking_options(true), false));
 }
 
 }  // namespace
