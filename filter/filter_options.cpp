@@ -63,6 +63,7 @@ FilterOptions options_from_config(const navfuse::config::Config& config) {
   o.chi2_gate = {config.gates.chi2_1d, config.gates.chi2_2d, config.gates.chi2_3d};
   o.max_latency_s = config.timing.max_latency_s;
   const auto& nhc = config.nhc;
+  if (nhc.lever_arm_m) o.nhc_lever_arm_m = vec(*nhc.lever_arm_m);
   o.nhc_lateral_std_mps = nhc.lateral_std_mps;
   o.nhc_vertical_std_mps = nhc.vertical_std_mps;
   o.nhc_min_speed_mps = nhc.min_speed_mps;

@@ -104,6 +104,8 @@ struct AlignmentConfig {
 // wheel point. Unset `enabled`: on for a land platform only.
 struct NhcConfig {
   std::optional<bool> enabled;
+  // The point that does not slip sideways (a car's rear-axle centre); unset: wheel.lever_arm_m.
+  std::optional<Vec3> lever_arm_m;
   double lateral_std_mps = 0.1;
   double vertical_std_mps = 0.1;
   double min_speed_mps = 1.0;  // below it stops are left to zero-velocity updates
@@ -230,10 +232,11 @@ struct KeyBinding {
   std::string_view help;  // meaning and unit; printed as a comment by to_yaml()
   ValueRange range;
   // Where the value lives: a scalar, a fixed-length array of 3 (YAML flow sequence), an optional
-  // scalar (`~` = unset), the platform name, or a switch (`true` / `false` only; optional: `~`
-  // leaves it to the platform).
+  // scalar or array (`~` = unset), the platform name, or a switch (`true` / `false` only;
+  // optional: `~` leaves it to the platform).
   std::variant<double* (*)(Config&), Vec3* (*)(Config&), std::optional<double>* (*)(Config&),
-               Platform* (*)(Config&), bool* (*)(Config&), std::optional<bool>* (*)(Config&)>
+               Platform* (*)(Config&), bool* (*)(Config&), std::optional<bool>* (*)(Config&),
+               std::optional<Vec3>* (*)(Config&)>
       target;
 };
 

@@ -154,8 +154,11 @@ const KeyBinding kKeys[] = {
                        "level from whatever was seen when never stationary this long (s)"),
     NAVFUSE_CONFIG_KEY(nhc.enabled, kAny,
                        "non-holonomic constraint (true | false; ~: land platform only)"),
-    NAVFUSE_CONFIG_KEY(nhc.lateral_std_mps, kSpeedMps, "sideways velocity at the wheel point, 1 sigma (m/s)"),
-    NAVFUSE_CONFIG_KEY(nhc.vertical_std_mps, kSpeedMps, "vertical velocity at the wheel point, 1 sigma (m/s)"),
+    NAVFUSE_CONFIG_KEY(nhc.lever_arm_m, kLeverArmM,
+                       "the point that does not slip sideways (a car's rear-axle centre), vehicle frame "
+                       "FRD (m; ~: wheel.lever_arm_m)"),
+    NAVFUSE_CONFIG_KEY(nhc.lateral_std_mps, kSpeedMps, "sideways velocity at the constraint point, 1 sigma (m/s)"),
+    NAVFUSE_CONFIG_KEY(nhc.vertical_std_mps, kSpeedMps, "vertical velocity at the constraint point, 1 sigma (m/s)"),
     NAVFUSE_CONFIG_KEY(nhc.min_speed_mps, kSpeedThresholdMps, "applied only above this speed (m/s)"),
     NAVFUSE_CONFIG_KEY(nhc.interval_s, kShortSpanS, "time between constraint updates (s)"),
     NAVFUSE_CONFIG_KEY(zupt.enabled, kAny,

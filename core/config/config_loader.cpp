@@ -212,7 +212,20 @@ class Loader {
       *(*platform)(config) = *p;
       return;
     }
-    Vec3& out = *std::get<Vec3* (*)(Config&)>(binding.target)(config);
+    if (auto optional = std::get_if<std::optional<Vec3>* (*)(Config&)>(&binding.target)) {
+      std::optional<Vec3>& out = *(*optional)(config);
+      if (node.IsNull()) {
+        out.reset();  // `~`: back to unset
+      } else {
+        out = vec3(node, binding);
+      }
+      return;
+    }
+    *std::get<Vec3* (*)(Config&)>(binding.target)(config) = vec3(node, binding);
+  }
+
+  Vec3 vec3(const YAML::Node& node, const KeyBinding& binding) {
+    Vec3 out{};
     if (!node.IsSequence() || node.size() != out.size()) {
       fail(node, binding.key, "expected a list of 3 numbers, got " + describe(node));
     }
@@ -220,6 +233,7 @@ class Loader {
       out[i] = number(node[i], std::string(binding.key) + "[" + std::to_string(i) + "]",
                       binding.range);
     }
+    return out;
   }
 
   // Only `true` and `false`: YAML 1.1's yes/no/on/off (and `1`, a quoted "true") are more often a

@@ -17,6 +17,14 @@ std::string format_number(double v) {
   return std::string(buf, result.ptr);
 }
 
+std::string format_vec3(const Vec3& v) {
+  // Appended piecewise: `"[" + std::string` trips GCC 12's false -Wrestrict (GCC bug 105329).
+  std::string out = "[";
+  out += format_number(v[0]) + ", " + format_number(v[1]) + ", " + format_number(v[2]);
+  out += ']';
+  return out;
+}
+
 std::vector<std::string_view> split(std::string_view path) {
   std::vector<std::string_view> parts;
   for (std::size_t start = 0;;) {
@@ -57,12 +65,11 @@ std::string to_yaml(const Config& config) {
       out += v ? (*v ? "true" : "false") : "~";
     } else if (auto platform = std::get_if<Platform* (*)(Config&)>(&binding.target)) {
       out += to_string(*(*platform)(copy));
+    } else if (auto optional_vec = std::get_if<std::optional<Vec3>* (*)(Config&)>(&binding.target)) {
+      const std::optional<Vec3>& v = *(*optional_vec)(copy);
+      out += v ? format_vec3(*v) : std::string("~");
     } else {
-      const Vec3& v = *std::get<Vec3* (*)(Config&)>(binding.target)(copy);
-      // Appended piecewise: `"[" + std::string` trips GCC 12's false -Wrestrict (GCC bug 105329).
-      out += '[';
-      out += format_number(v[0]) + ", " + format_number(v[1]) + ", " + format_number(v[2]);
-      out += ']';
+      out += format_vec3(*std::get<Vec3* (*)(Config&)>(binding.target)(copy));
     }
     out += "  # " + std::string(binding.help) + "\n";
   }

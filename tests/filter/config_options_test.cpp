@@ -88,6 +88,25 @@ TEST(ConfigOptions, KeysReachTheirOptionsInSiUnits) {
   EXPECT_EQ(o.max_latency_s, 0.5);
 }
 
+TEST(ConfigOptions, NhcPointIsItsOwnKeyOrTheWheel) {
+  // Unset: the constraint is applied at the wheel (odometer) point.
+  const FilterOptions wheel = options_from_config(config::load_from_string("wheel: {lever_arm_m: [-1.2, 0, 0.3]}\n"));
+  EXPECT_FALSE(wheel.nhc_lever_arm_m);
+  EXPECT_EQ(wheel.wheel_lever_arm_m, Eigen::Vector3d(-1.2, 0.0, 0.3));
+  // A car with no odometer: the rear-axle centre given for the constraint alone.
+  const config::Config c = config::load_from_string("nhc: {lever_arm_m: [-1.5, 0.1, 0.8]}\n");
+  ASSERT_TRUE(c.nhc.lever_arm_m);
+  const FilterOptions o = options_from_config(c);
+  ASSERT_TRUE(o.nhc_lever_arm_m);
+  EXPECT_EQ(*o.nhc_lever_arm_m, Eigen::Vector3d(-1.5, 0.1, 0.8));
+  // `~` clears it; the dump prints it and reads back.
+  const config::Config round = config::load_from_string(config::to_yaml(c));
+  ASSERT_TRUE(round.nhc.lever_arm_m);
+  EXPECT_EQ(*round.nhc.lever_arm_m, *c.nhc.lever_arm_m);
+  EXPECT_FALSE(config::load_from_string(config::to_yaml(config::load_from_string("nhc: {lever_arm_m: ~}\n")))
+                   .nhc.lever_arm_m);
+}
+
 TEST(ConfigOptions, ExplicitSwitchesOverrideThePlatform) {
   // A land vehicle without NHC (e.g. a tracked vehicle that skids), course alignment kept.
   auto land = config::load_from_string("platform: land\nnhc: {enabled: false}\n");

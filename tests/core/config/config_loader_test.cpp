@@ -221,7 +221,8 @@ TEST(ConfigLoader, ValuesOutsideThePhysicalRangeAreRefused) {
     const std::string key(b.key);
     const std::string section = key.substr(0, key.find('.'));
     const std::string name = key.substr(key.find('.') + 1);
-    const bool list = std::holds_alternative<Vec3* (*)(Config&)>(b.target);
+    const bool list = std::holds_alternative<Vec3* (*)(Config&)>(b.target) ||
+                      std::holds_alternative<std::optional<Vec3>* (*)(Config&)>(b.target);
     for (const char* bad : {".nan", ".inf", "-.inf"}) {
       const std::string value = list ? std::string("[0, ") + bad + ", 0]" : std::string(bad);
       const std::string e = error_of(section + ": {" + name + ": " + value + "}");

@@ -68,6 +68,26 @@ TEST(AlignmentKeys, RefusesNonFiniteAndOutOfRangeNamingTheKey) {
   EXPECT_EQ(error_of("alignment: {min_speed_mps: 100, initial_heading_deg: -360}"), "");
 }
 
+TEST(NhcLeverArmKey, UnsetOrThreeNumbersInRange) {
+  EXPECT_FALSE(load_from_string("device: vn300\n").nhc.lever_arm_m);
+  const Config c = load_from_string("nhc:\n  lever_arm_m: [-1.5, 0, 0.75]\n");
+  ASSERT_TRUE(c.nhc.lever_arm_m);
+  EXPECT_EQ(*c.nhc.lever_arm_m, (Vec3{-1.5, 0.0, 0.75}));
+  EXPECT_FALSE(load_from_string("nhc: {lever_arm_m: ~}").nhc.lever_arm_m);
+  const struct {
+    const char* yaml;
+    const char* message;
+  } refused[] = {
+      {"nhc: {lever_arm_m: [1, 2]}", "nhc.lever_arm_m: expected a list of 3 numbers"},
+      {"nhc: {lever_arm_m: 1.5}", "nhc.lever_arm_m: expected a list of 3 numbers"},
+      {"nhc: {lever_arm_m: [0, 150, 0]}", "nhc.lever_arm_m[1]: must be in [-100, 100], got 150"},
+      {"nhc: {lever_arm_m: [0, 0, .nan]}", "nhc.lever_arm_m[2]: expected a finite number"},
+  };
+  for (const auto& r : refused) {
+    EXPECT_NE(error_of(r.yaml).find(r.message), std::string::npos) << r.yaml << ": " << error_of(r.yaml);
+  }
+}
+
 TEST(PlatformAndAlignment, ToYamlRoundTrips) {
   Config c = defaults_for(DeviceProfile::kCv7);
   c.platform = Platform::kPedestrian;
