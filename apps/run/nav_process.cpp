@@ -79,7 +79,8 @@ NavProcess::NavProcess(const RunOptions& options)
   for (std::size_t i = 0; i < endpoints.size(); ++i) {
     auto recorder = recorder_ ? recorder_->open_stream(i, endpoints[i].text) : nullptr;
     inputs_.push_back(std::make_unique<InputReader>(std::move(endpoints[i]), static_cast<std::uint16_t>(i), queue_,
-                                                    options_.configure_device, std::move(recorder), pacer_.get()));
+                                                    options_.configure_device ? &config_ : nullptr, std::move(recorder),
+                                                    pacer_.get()));
   }
   if (!options_.fe_out.empty()) {
     outputs_.push_back(std::make_unique<OutputSink>(
@@ -242,6 +243,13 @@ void NavProcess::report_status() {
   const StatusInputs in{engine.solution(), engine.stats(), snapshots_, queue_full, runner_->gated_total(),
                         output_drops, latency_.take_window()};
   lcm_->post_status(status_.make(in, now));
+}
+
+std::string NavProcess::setup_error() const {
+  for (const auto& in : inputs_) {
+    if (in->setup_failed()) return in->setup_error();
+  }
+  return {};
 }
 
 std::vector<std::string> NavProcess::output_errors() const {
