@@ -252,7 +252,7 @@ void InputReader::configure_device() {
       ingest(got);
     }
     if (const std::string why = find_refusal(fmt, reply); !why.empty()) {
-      fail_setup("device refused a set-up command: " + why);
+      fail_setup("device refused a set-up command: " + why + (step.sets.empty() ? "" : " (setting " + step.sets + ")"));
       return;
     }
     if (step.verify) {

@@ -26,13 +26,15 @@ struct SetupStep {
   // one line naming the setting with the value sent and the value read (or that none came).
   // Empty for commands that read nothing back.
   std::function<std::string(std::span<const std::uint8_t>)> verify;
+  // For a write of a setting: "<setting> to (values)", so that a refusal names what was sent.
+  std::string sets;
 };
 
 // Steps without read-back checks.
 inline std::vector<SetupStep> steps_from_commands(std::vector<DeviceCommand> commands) {
   std::vector<SetupStep> out;
   out.reserve(commands.size());
-  for (DeviceCommand& c : commands) out.push_back({std::move(c), {}});
+  for (DeviceCommand& c : commands) out.push_back({std::move(c), {}, {}});
   return out;
 }
 
@@ -44,6 +46,11 @@ inline std::string vector_text(const Eigen::VectorXd& v) {
     out += buf;
   }
   return out + ")";
+}
+
+// SetupStep::sets of a vector setting.
+inline std::string setting_to(std::string_view setting, const Eigen::VectorXd& value) {
+  return std::string(setting) + " to " + vector_text(value);
 }
 
 // The read-back verdict for a vector setting: "" when `read` has every component within

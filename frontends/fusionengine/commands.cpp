@@ -81,10 +81,10 @@ std::vector<SetupStep> geometry_setup_steps(const config::Config& config) {
   FusionEngineWriter writer;
   std::vector<SetupStep> steps;
   auto add = [&](ConfigType type, const Point3f& value) {
-    steps.push_back({set_point_config(writer, type, value), {}});
-    steps.push_back({get_config(writer, type), [type, value](std::span<const std::uint8_t> reply) {
-                       return verify_point_config(reply, type, value);
-                     }});
+    steps.push_back({set_point_config(writer, type, value), {}, setting_to(setting_name(type), vector_of(value))});
+    steps.push_back({get_config(writer, type),
+                     [type, value](std::span<const std::uint8_t> reply) { return verify_point_config(reply, type, value); },
+                     {}});
   };
   add(ConfigType::kDeviceLeverArm, Point3f{});
   add(ConfigType::kGnssLeverArm, point_from_frd(config.gnss.lever_arm_m));

@@ -57,11 +57,13 @@ std::vector<SetupStep> cv7_setup_steps(const config::Config& config) {
   // Each write's key (receiver id, source) is its first parameter after the function selector.
   auto add = [&](const Command& write, const Eigen::Vector3d& value, std::string setting) {
     const auto key = static_cast<std::uint8_t>(std::get<std::uint64_t>(write.values.at(1)));
-    if (auto p = build_command_packet(write)) steps.push_back({std::move(*p), {}});
+    if (auto p = build_command_packet(write)) steps.push_back({std::move(*p), {}, setting_to(setting, value)});
     if (auto p = build_command_packet(read_of(write, kKeyedVectorKeys))) {
-      steps.push_back({std::move(*p), [=, setting = std::move(setting)](std::span<const std::uint8_t> reply) {
+      steps.push_back({std::move(*p),
+                       [=, setting = std::move(setting)](std::span<const std::uint8_t> reply) {
                          return verify_vector_setting(reply, write.desc_set, write.desc, key, value, setting);
-                       }});
+                       },
+                       {}});
     }
   };
   const Eigen::Vector3d primary = in_device_output_frame(config, config.gnss.lever_arm_m);
@@ -74,7 +76,7 @@ std::vector<SetupStep> cv7_setup_steps(const config::Config& config) {
   }
   const Eigen::Vector3d wheel = in_device_output_frame(config, config.wheel.lever_arm_m);
   add(speed_lever_arm(wheel), wheel, "CV7 speed measurement lever arm (0x0D,0x61, device vehicle frame, m)");
-  steps.push_back({std::move(resume_packet), {}});
+  steps.push_back({std::move(resume_packet), {}, {}});
   return steps;
 }
 

@@ -9,6 +9,9 @@ namespace {
 
 constexpr std::string_view kReadReply = "$VNRRG,";
 
+constexpr std::string_view kAntennaSetting = "VN-300 GNSS antenna A offset (Reg 57, body frame, m)";
+constexpr std::string_view kBaselineSetting = "VN-300 GNSS compass baseline and uncertainty (Reg 93, body frame, m)";
+
 Eigen::VectorXd stacked(const CompassBaseline& b) {
   Eigen::VectorXd v(6);
   v << b.baseline_m, b.uncertainty_m;
@@ -41,7 +44,7 @@ std::string verify_antenna_offset(std::span<const std::uint8_t> reply_bytes, con
   if (const auto reply = find_register_reply(reply_bytes, reg::kGnssAntennaA)) {
     if (const auto v = parse_vector3(*reply, reg::kGnssAntennaA)) read = Eigen::VectorXd(*v);
   }
-  return compare_read_back("VN-300 GNSS antenna A offset (Reg 57, body frame, m)", sent_m, read, kReadBackToleranceM);
+  return compare_read_back(kAntennaSetting, sent_m, read, kReadBackToleranceM);
 }
 
 std::string verify_compass_baseline(std::span<const std::uint8_t> reply_bytes, const CompassBaseline& sent) {
@@ -49,8 +52,7 @@ std::string verify_compass_baseline(std::span<const std::uint8_t> reply_bytes, c
   if (const auto reply = find_register_reply(reply_bytes, reg::kCompassBaseline)) {
     if (const auto b = parse_compass_baseline(*reply)) read = stacked(*b);
   }
-  return compare_read_back("VN-300 GNSS compass baseline and uncertainty (Reg 93, body frame, m)", stacked(sent), read,
-                           kReadBackToleranceM);
+  return compare_read_back(kBaselineSetting, stacked(sent), read, kReadBackToleranceM);
 }
 
 std::vector<SetupStep> fusion_setup_steps(const config::Config& config) {
@@ -61,18 +63,27 @@ std::vector<SetupStep> fusion_setup_steps(const config::Config& config) {
   const std::string resume = sentences.back();
   sentences.pop_back();
   std::vector<SetupStep> steps = steps_from_commands(commands_from_sentences(sentences));
+  // Names what a geometry write sets, for the report of a refusal.
+  auto name_write = [&](const std::string& write, std::string sets) {
+    for (SetupStep& s : steps) {
+      if (std::string_view(reinterpret_cast<const char*>(s.command.data()), s.command.size()) == write) s.sets = sets;
+    }
+  };
   auto add_read = [&](int id, std::function<std::string(std::span<const std::uint8_t>)> verify) {
     const std::string read = read_register(id);
-    steps.push_back({DeviceCommand(read.begin(), read.end()), std::move(verify)});
+    steps.push_back({DeviceCommand(read.begin(), read.end()), std::move(verify), {}});
   };
   const Eigen::Vector3d antenna = *setup.antenna_a_offset_m;
+  name_write(write_antenna_offset(Antenna::kInternalA, antenna), setting_to(kAntennaSetting, antenna));
   add_read(reg::kGnssAntennaA, [antenna](std::span<const std::uint8_t> r) { return verify_antenna_offset(r, antenna); });
   if (setup.compass_baseline_m) {
     const CompassBaseline baseline{*setup.compass_baseline_m, setup.compass_baseline_std_m};
+    name_write(write_compass_baseline(baseline.baseline_m, baseline.uncertainty_m),
+               setting_to(kBaselineSetting, stacked(baseline)));
     add_read(reg::kCompassBaseline,
              [baseline](std::span<const std::uint8_t> r) { return verify_compass_baseline(r, baseline); });
   }
-  steps.push_back({DeviceCommand(resume.begin(), resume.end()), {}});
+  steps.push_back({DeviceCommand(resume.begin(), resume.end()), {}, {}});
   return steps;
 }
 

@@ -41,6 +41,7 @@ TEST(FeGeometry, StepsSetAndReadBackEachLeverArmInFlu) {
   EXPECT_EQ(payload_of(steps[2].command), test::from_hex("1200 0000 0c00 0000 0000003f 000080be 0000803f"));
   EXPECT_EQ(payload_of(steps[4].command), test::from_hex("1800 0000 0c00 0000 000000bf 000080be 0000803f"));
   for (std::size_t i = 0; i < steps.size(); ++i) EXPECT_EQ(static_cast<bool>(steps[i].verify), i % 2 == 1) << i;
+  EXPECT_EQ(steps[2].sets, "FusionEngine GnssLeverArm (ConfigType 0x12, body FLU, m) to (0.5000, -0.2500, 1.0000)");
   // Without a second antenna, no aux lever arm.
   c.gnss.secondary_lever_arm_m = {0, 0, 0};
   EXPECT_EQ(geometry_setup_steps(c).size(), 4u);

@@ -35,6 +35,8 @@ TEST(MipGeometry, GeometryGoesInWhileIdleWithARead) {
   EXPECT_EQ(steps[g + 2].command, test::hex("75650D10 1061 01 01 00000000 00000000 00000000 6A67"));
   EXPECT_EQ(steps[g + 3].command, test::hex("75650D04 0461 02 01 5305"));
   EXPECT_EQ(steps.back().command, base.back());  // Resume
+  // A write names what it sets, for the report of a refusal.
+  EXPECT_EQ(steps[g].sets, "CV7 GNSS antenna 1 offset (0x0D,0x54, device vehicle frame, m) to (-0.3200, 0.1100, -0.6400)");
   for (std::size_t i = 0; i < steps.size(); ++i) EXPECT_EQ(static_cast<bool>(steps[i].verify), i == g + 1 || i == g + 3) << i;
 }
 

@@ -46,6 +46,8 @@ TEST(VnGeometry, WritesTheConfigLeverArmAndBaselineThenReadsThemBack) {
     const bool is_read = static_cast<std::ptrdiff_t>(i) == read57 || static_cast<std::ptrdiff_t>(i) == read93;
     EXPECT_EQ(static_cast<bool>(steps[i].verify), is_read) << text[i];
   }
+  EXPECT_EQ(steps[static_cast<std::size_t>(write57)].sets,
+            "VN-300 GNSS antenna A offset (Reg 57, body frame, m) to (0.7500, -0.5000, 0.0000)");
   // The device answering as the ICD prints it.
   EXPECT_EQ(steps[static_cast<std::size_t>(read93)].verify(
                 bytes_of("$VNRRG,93,+01.000,+00.000,+00.000,00.0254,00.0254,00.0254*60\r\n")),
