@@ -100,7 +100,7 @@ void add_run_command(CLI::App& root, int& exit_code) {
                 "Send each input device its set-up sequence so that it streams what fusion needs, and the "
                 "installation geometry of the config (VN-300: Reg 57 antenna A offset, Reg 93 baseline; CV7: "
                 "0x0D,0x54 antenna offsets, 0x0D,0x61 speed lever arm; FusionEngine: device, GNSS and GNSS aux "
-                "lever arms), each read back and compared; a refusal or a mismatch ends the run with an error. "
+                "lever arms and the IMUOutput/Pose/GNSSInfo rates), each read back and compared; a refusal or a mismatch ends the run with an error. "
                 "Mounting is not sent: navfuse rotates the IMU data by imu.mounting_rpy_deg itself (a VN-300 "
                 "Reg 26 rotation would also need a reset to take effect)");
   sub->add_option("--status-interval", opt->status_interval_s, "NAVFUSE_STATUS period, s (default 1)");

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "frontends/fusionengine/framer.hpp"
+#include "frontends/fusionengine/message_catalog.hpp"
 #include "frontends/fusionengine/messages_control.hpp"
 #include "frontends/fusionengine/payload_reader.hpp"
 
@@ -40,7 +41,62 @@ std::string setting_name(ConfigType type) {
   return text;
 }
 
+// The messages navfuse decodes from a device (to_core.hpp) and the rate it wants them at.
+constexpr MessageType kFusedMessages[] = {MessageType::kImuOutput, MessageType::kPose, MessageType::kGnssInfo};
+constexpr MessageRate kFusedRate = MessageRate::kOnChange;
+constexpr InterfaceId kCurrentInterface{static_cast<std::uint8_t>(TransportType::kCurrent), 0};
+
+std::string rate_setting_name(MessageType message) {
+  return "FusionEngine " + std::string(message_name(to_u16(message)).value_or("message")) + " (" +
+         std::to_string(to_u16(message)) + ") output rate (SetMessageRate, current interface)";
+}
+
 }  // namespace
+
+std::vector<std::uint8_t> set_message_rate(FusionEngineWriter& writer, MessageType message, MessageRate rate,
+                                           const InterfaceId& iface) {
+  SetMessageRateMessage m;
+  m.output_interface = iface;
+  m.protocol = static_cast<std::uint8_t>(ProtocolType::kFusionEngine);
+  m.message_id = to_u16(message);
+  m.rate = static_cast<std::uint8_t>(rate);
+  return writer.frame(m);
+}
+
+std::vector<std::uint8_t> get_message_rate(FusionEngineWriter& writer, MessageType message, const InterfaceId& iface) {
+  GetMessageRateMessage m;
+  m.output_interface = iface;
+  m.protocol = static_cast<std::uint8_t>(ProtocolType::kFusionEngine);
+  m.source = static_cast<std::uint8_t>(ConfigSource::kActive);
+  m.message_id = to_u16(message);
+  return writer.frame(m);
+}
+
+std::string verify_message_rate(std::span<const std::uint8_t> reply_bytes, MessageType message, MessageRate sent) {
+  std::optional<std::uint8_t> read;
+  std::string refused;
+  Framer framer;
+  framer.feed(reply_bytes, [&](const Frame& f) {
+    MessageRateResponseMessage r;
+    if (read || !refused.empty() || f.header.message_type != to_u16(MessageType::kMessageRateResponse) ||
+        !decode_payload(f.payload, r)) {
+      return;
+    }
+    if (r.response != static_cast<std::uint8_t>(Response::kOk)) {
+      refused = refusal_text("MessageRateResponse", r.response);
+      return;
+    }
+    for (const MessageRateEntry& e : r.rates) {
+      if (e.message_id == to_u16(message)) read = e.configured_rate;
+    }
+  });
+  const std::string setting = rate_setting_name(message);
+  if (!refused.empty()) return setting + ": read-back refused (" + refused + ")";
+  const std::string sent_text = "sent rate " + std::to_string(static_cast<unsigned>(sent));
+  if (!read) return setting + ": " + sent_text + ", no read-back reply";
+  if (*read == static_cast<std::uint8_t>(sent)) return {};
+  return setting + ": " + sent_text + ", read rate " + std::to_string(static_cast<unsigned>(*read));
+}
 
 std::vector<std::uint8_t> set_point_config(FusionEngineWriter& writer, ConfigType type, const Point3f& value) {
   SetConfigMessage m;
@@ -77,7 +133,7 @@ std::string verify_point_config(std::span<const std::uint8_t> reply_bytes, Confi
   return compare_read_back(setting_name(type), vector_of(sent), read, 0.0);
 }
 
-std::vector<SetupStep> geometry_setup_steps(const config::Config& config) {
+std::vector<SetupStep> fusion_setup_steps(const config::Config& config) {
   FusionEngineWriter writer;
   std::vector<SetupStep> steps;
   auto add = [&](ConfigType type, const Point3f& value) {
@@ -89,6 +145,13 @@ std::vector<SetupStep> geometry_setup_steps(const config::Config& config) {
   add(ConfigType::kDeviceLeverArm, Point3f{});
   add(ConfigType::kGnssLeverArm, point_from_frd(config.gnss.lever_arm_m));
   if (has_secondary_antenna(config)) add(ConfigType::kGnssAuxLeverArm, point_from_frd(config.gnss.secondary_lever_arm_m));
+  for (const MessageType message : kFusedMessages) {
+    steps.push_back({set_message_rate(writer, message, kFusedRate, kCurrentInterface), {},
+                     rate_setting_name(message) + " to rate " + std::to_string(static_cast<unsigned>(kFusedRate))});
+    steps.push_back({get_message_rate(writer, message, kCurrentInterface),
+                     [message](std::span<const std::uint8_t> reply) { return verify_message_rate(reply, message, kFusedRate); },
+                     {}});
+  }
   return steps;
 }
 

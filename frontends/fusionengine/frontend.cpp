@@ -30,8 +30,8 @@ const FrontendInfo& frontend() {
       .make_encoder = &make_encoder,
       .default_profile = config::DeviceProfile::kFusionEngine,
       // A FusionEngine device streams poses and measurements by default: the set-up is the
-      // installation geometry only (commands.hpp).
-      .setup_steps = &geometry_setup_steps,
+      // installation geometry and the rates of the messages navfuse decodes (commands.hpp).
+      .setup_steps = &fusion_setup_steps,
       .find_refusal = &find_refusal,
       // Device solution of a Point One GNSS/INS with corrections, 10 Hz: typical of the class,
       // not datasheet guarantees.

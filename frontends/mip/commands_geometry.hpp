@@ -10,7 +10,7 @@
 // Frame: the CV7's offsets are in its vehicle frame, the frame it streams 0x80 in (the sensor
 // frame turned by its sensor-to-vehicle transform, digest §4.1, L2485). navfuse turns that frame
 // into its vehicle by imu.mounting_rpy_deg, so the config's lever arms are sent as C_vs^T r
-// (frontends/common/setup_step.hpp). The sensor-to-vehicle transform (0x0C,0x31) itself is not
+// (frontends/common/install_geometry.hpp). The sensor-to-vehicle transform (0x0C,0x31) itself is not
 // written: the device would then rotate the 0x80 IMU data that navfuse rotates by its own
 // mounting again (DESIGN.md conventions), and it resets the CV7's filters (digest §1).
 #pragma once
@@ -23,6 +23,7 @@
 #include <Eigen/Core>
 
 #include "core/config/config.hpp"
+#include "frontends/common/install_geometry.hpp"
 #include "frontends/common/setup_step.hpp"
 #include "frontends/mip/commands.hpp"
 

@@ -5,7 +5,7 @@
 // Frame: both registers are in the VN-300 body frame, the frame its binary outputs are in (the
 // sensor frame turned by the reference frame rotation, Reg 26, L3466-3501). navfuse turns that
 // frame into the vehicle by imu.mounting_rpy_deg, so the config's vehicle-frame lever arms are
-// sent as C_vs^T r (frontends/common/setup_step.hpp), right whatever Reg 26 holds.
+// sent as C_vs^T r (frontends/common/install_geometry.hpp), right whatever Reg 26 holds.
 //
 // Reg 26 itself is not written: it would turn the IMU data navfuse already rotates by its own
 // mounting (rotating it twice), and it is a static register that takes effect only after Write
@@ -20,6 +20,7 @@
 #include <Eigen/Core>
 
 #include "core/config/config.hpp"
+#include "frontends/common/install_geometry.hpp"
 #include "frontends/common/setup_step.hpp"
 #include "frontends/vectornav/commands.hpp"
 

@@ -110,7 +110,7 @@ TEST_F(RunConfigureDeviceTest, FusionEngineDeviceGetsTheVehicleFrameLeverArms) {
   EmulatedDevice device(dir_);
   ASSERT_TRUE(device.running()) << device.process().output();
   auto nav = configure(device.fe_uri(), std::string("device: fusionengine\n") + kVehicle);
-  expect_verified_then_clean_exit(*nav, "3");  // device, GNSS and GNSS aux lever arm
+  expect_verified_then_clean_exit(*nav, "6");  // device, GNSS, GNSS aux lever arm; 3 message rates
   ASSERT_TRUE(device.process().wait_for_output("antenna 1 set by command", kTimeoutMs));
   const std::string arrived = device.process().output();
   expect_logged(arrived, "GNSS lever arm of antenna 0 set by command to", {1.0, 0.5, -1.0});
