@@ -1,6 +1,6 @@
 // The installation geometry of `navfuse run --configure-device` for a VN-300 (issue 17): the
 // GNSS A antenna offset (Reg 57, ICD §3.7.2 L3844-3868) and the compass baseline with its
-// uncertainty (Reg 93, L4250-4287) written from the config, each read back ($VNRRG) and compared.
+// uncertainty (Reg 93, L4255-4287) written from the config, each read back ($VNRRG) and compared.
 //
 // Frame: both registers are in the VN-300 body frame, the frame its binary outputs are in (the
 // sensor frame turned by the reference frame rotation, Reg 26, L3466-3501). navfuse turns that
@@ -9,7 +9,7 @@
 //
 // Reg 26 itself is not written: it would turn the IMU data navfuse already rotates by its own
 // mounting (rotating it twice), and it is a static register that takes effect only after Write
-// Settings and a reset (L3480), which would drop the link's unsaved set-up.
+// Settings and a reset (L3470), which would drop the link's unsaved set-up.
 #pragma once
 
 #include <cstdint>
