@@ -238,18 +238,21 @@ void InputReader::configure_device() {
       return;
     }
     // Read the answer (and whatever the device streams meanwhile, which is decoded as usual).
+    // A read-back waits for the reply it checks, not just for a quiet gap: a device streaming
+    // at 10 Hz is quiet for longer than the gap before its answer comes.
     reply.clear();
     const auto deadline = std::chrono::steady_clock::now() + kReplyTimeout;
     while (std::chrono::steady_clock::now() < deadline && !stop_.load(std::memory_order_relaxed)) {
       const int wait = reply.empty() ? kReadTimeoutMs : kReplyQuietMs;
       const std::ptrdiff_t n = transport_->read(buffer, wait);
       if (n <= 0) {
-        if (!reply.empty()) break;
+        if (!reply.empty() && !step.verify) break;
         continue;
       }
       const std::span<const std::uint8_t> got(buffer.data(), static_cast<std::size_t>(n));
       reply.insert(reply.end(), got.begin(), got.end());
       ingest(got);
+      if (step.verify && step.verify(reply).empty()) break;
     }
     if (const std::string why = find_refusal(fmt, reply); !why.empty()) {
       fail_setup("device refused a set-up command: " + why + (step.sets.empty() ? "" : " (setting " + step.sets + ")"));
