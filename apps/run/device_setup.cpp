@@ -4,10 +4,10 @@
 
 namespace navfuse::apps {
 
-std::vector<DeviceCommand> device_setup_commands(std::string_view format) {
+std::vector<SetupStep> device_setup_steps(std::string_view format, const config::Config& config) {
   const frontends::FrontendInfo* f = find_frontend(format);
-  if (f == nullptr || f->setup_commands == nullptr) return {};
-  return f->setup_commands();
+  if (f == nullptr || f->setup_steps == nullptr) return {};
+  return f->setup_steps(config);
 }
 
 std::string find_refusal(std::string_view format, std::span<const std::uint8_t> reply_bytes) {

@@ -77,11 +77,12 @@ class InputReader::QueueSink final : public frontends::DecodeSink {
 };
 
 InputReader::InputReader(InputEndpoint endpoint, std::uint16_t index, MeasurementQueue& queue,
-                         bool configure_device, std::unique_ptr<StreamRecorder> recorder, RealtimePacer* pacer)
+                         const config::Config* device_config, std::unique_ptr<StreamRecorder> recorder,
+                         RealtimePacer* pacer)
     : endpoint_(std::move(endpoint)),
       index_(index),
       queue_(queue),
-      configure_(configure_device),
+      device_config_(device_config),
       live_(!is_regular_file(endpoint_.uri)),
       sink_(std::make_unique<QueueSink>(*this)),
       recorder_(std::move(recorder)),
@@ -130,7 +131,7 @@ void InputReader::run() {
   std::array<std::uint8_t, kReadChunk> buffer{};
   // Paced reads are small, so that a read's block of measurements spans little time.
   const std::size_t read_size = pacer_ != nullptr ? kPacedReadChunk : buffer.size();
-  if (configure_ && live_) configure_device();
+  if (device_config_ != nullptr && live_) configure_device();
   while (!stop_.load(std::memory_order_relaxed)) {
     const std::ptrdiff_t n = transport_->read(std::span(buffer.data(), read_size), kReadTimeoutMs);
     if (n == io::kEndOfStream) break;
@@ -219,44 +220,73 @@ void InputReader::watch_link() {
     seen_reconnects_ = s.reconnects;
     reconnects_.store(s.reconnects, std::memory_order_relaxed);
     log_event("input '" + endpoint_.text + "' re-opened");
-    if (configure_) configure_device();
+    if (device_config_ != nullptr) configure_device();
   }
 }
 
 void InputReader::configure_device() {
   const std::string_view fmt = format();
-  const std::vector<DeviceCommand> commands = device_setup_commands(fmt);
-  if (commands.empty()) return;
+  const std::vector<SetupStep> steps = device_setup_steps(fmt, *device_config_);
+  if (steps.empty()) return;
   transport_->wait_open(static_cast<int>(kReplyTimeout.count()));
   std::array<std::uint8_t, kReadChunk> buffer{};
   std::vector<std::uint8_t> reply;
-  std::size_t refused = 0;
-  for (const DeviceCommand& command : commands) {
-    if (transport_->write(command) <= 0) {
+  std::size_t verified = 0;
+  for (const SetupStep& step : steps) {
+    if (transport_->write(step.command) <= 0) {
       log_event("input '" + endpoint_.text + "': cannot send the device set-up (link down)");
       return;
     }
     // Read the answer (and whatever the device streams meanwhile, which is decoded as usual).
+    // A read-back waits for the reply it checks, not just for a quiet gap: a device streaming
+    // at 10 Hz is quiet for longer than the gap before its answer comes.
     reply.clear();
     const auto deadline = std::chrono::steady_clock::now() + kReplyTimeout;
     while (std::chrono::steady_clock::now() < deadline && !stop_.load(std::memory_order_relaxed)) {
       const int wait = reply.empty() ? kReadTimeoutMs : kReplyQuietMs;
       const std::ptrdiff_t n = transport_->read(buffer, wait);
       if (n <= 0) {
-        if (!reply.empty()) break;
+        if (!reply.empty() && !step.verify) break;
         continue;
       }
       const std::span<const std::uint8_t> got(buffer.data(), static_cast<std::size_t>(n));
       reply.insert(reply.end(), got.begin(), got.end());
       ingest(got);
+      if (step.verify && step.verify(reply).empty()) break;
     }
     if (const std::string why = find_refusal(fmt, reply); !why.empty()) {
-      ++refused;
-      log_event("input '" + endpoint_.text + "': device refused a set-up command: " + why);
+      fail_setup("device refused a set-up command: " + why + (step.sets.empty() ? "" : " (setting " + step.sets + ")"));
+      return;
+    }
+    if (step.verify) {
+      if (const std::string why = step.verify(reply); !why.empty()) {
+        fail_setup("device set-up not verified: " + why);
+        return;
+      }
+      ++verified;
     }
   }
   log_event("input '" + endpoint_.text + "': sent the " + std::string(fmt) + " device set-up (" +
-            std::to_string(commands.size()) + " commands, " + std::to_string(refused) + " refused)");
+            std::to_string(steps.size()) + " commands, none refused; " + std::to_string(verified) +
+            " settings read back as written)");
+}
+
+void InputReader::fail_setup(const std::string& why) {
+  const std::string what = "input '" + endpoint_.text + "': " + why;
+  log_event(what);
+  {
+    std::lock_guard lock(setup_error_mutex_);
+    setup_error_ = what;
+  }
+  // Navigating on a device that is not set up as configured would give wrong results with no
+  // sign of it: this input ends here and the nav process stops with the error (issue 17).
+  setup_failed_.store(true, std::memory_order_release);
+  request_stop();
+}
+
+std::string InputReader::setup_error() const {
+  std::lock_guard lock(setup_error_mutex_);
+  return setup_error_;
 }
 
 std::size_t InputReader::send(std::span<const std::uint8_t> bytes) {

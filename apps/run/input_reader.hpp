@@ -7,6 +7,8 @@
 //  - Links that drop (a device unplugged, a TCP peer gone) are re-opened by the transport itself;
 //    the reader logs the loss and the recovery and, with --configure-device, sets the device up
 //    again.
+//  - With --configure-device a refused set-up command, or a setting that does not read back as
+//    written, ends the input (setup_failed()): the nav process then stops with that error.
 //  - Without a FORMAT: prefix the format is detected from the first bytes received.
 //  - A live input never waits for the filter: when the queue is full the measurement is dropped
 //    and counted. A file input is not live, so it waits for room instead of losing data, and
@@ -30,6 +32,7 @@
 #include "apps/run/input_endpoint.hpp"
 #include "apps/run/input_recorder.hpp"
 #include "apps/run/realtime_pacer.hpp"
+#include "core/config/config.hpp"
 #include "core/io/transport.hpp"
 
 namespace navfuse::apps {
@@ -48,8 +51,10 @@ struct InputCounters {
 class InputReader {
  public:
   // Opens the transport; throws CommandError naming the input when that fails.
+  // `device_config` (--configure-device; null: the device is not set up) gives the installation
+  // geometry sent to the device; it must outlive the reader.
   // `recorder` (may be null) writes this input's raw bytes; `pacer` (may be null) paces a file input.
-  InputReader(InputEndpoint endpoint, std::uint16_t index, MeasurementQueue& queue, bool configure_device,
+  InputReader(InputEndpoint endpoint, std::uint16_t index, MeasurementQueue& queue, const config::Config* device_config,
               std::unique_ptr<StreamRecorder> recorder, RealtimePacer* pacer);
   ~InputReader();
   InputReader(const InputReader&) = delete;
@@ -68,12 +73,17 @@ class InputReader {
   std::size_t send(std::span<const std::uint8_t> bytes);
   static constexpr std::size_t kMaxOutgoingBytes = 65536;
   bool ended() const { return ended_.load(std::memory_order_acquire); }
+  // The device refused its set-up or a setting did not read back as written (then the input has
+  // stopped); setup_error() says which, with the values sent and read.
+  bool setup_failed() const { return setup_failed_.load(std::memory_order_acquire); }
+  std::string setup_error() const;
 
  private:
   class QueueSink;
 
   void run();
   void configure_device();
+  void fail_setup(const std::string& why);
   // Collects the head of a stream without a format prefix; creates the decoder once detected.
   void detect(std::span<const std::uint8_t> bytes, bool at_end);
   void use_frontend(const frontends::FrontendInfo* frontend);
@@ -88,7 +98,7 @@ class InputReader {
   InputEndpoint endpoint_;
   std::uint16_t index_;
   MeasurementQueue& queue_;
-  bool configure_;
+  const config::Config* device_config_;  // --configure-device, else null
   bool live_;  // not a regular file: never wait for the filter
   std::unique_ptr<io::Transport> transport_;
   std::unique_ptr<frontends::StreamDecoder> decoder_;
@@ -106,6 +116,10 @@ class InputReader {
   std::vector<std::uint8_t> outgoing_;       // under outgoing_mutex_
   std::vector<std::uint8_t> writing_;        // reader thread only
   bool outgoing_failure_logged_ = false;
+
+  mutable std::mutex setup_error_mutex_;
+  std::string setup_error_;  // under setup_error_mutex_
+  std::atomic<bool> setup_failed_{false};
 
   std::thread thread_;
   std::atomic<bool> stop_{false};

@@ -9,6 +9,8 @@
 #include "apps/run/mip_device_emulator.hpp"
 #include "apps/run/nmea_output_link.hpp"
 #include "apps/run/run_log.hpp"
+#include "core/rotation/rotation.hpp"
+#include "frontends/common/setup_step.hpp"
 
 namespace navfuse::apps {
 namespace {
@@ -21,6 +23,8 @@ constexpr auto kFilterWait = std::chrono::milliseconds(20);
 // Position and velocity of one GNSS epoch are decoded as two measurements; within this they
 // are one NAVFUSE_GNSS message.
 constexpr std::int64_t kSameEpochNs = 1'000'000;
+
+using frontends::vector_text;
 
 config::Config load_config(const std::string& path) {
   if (path.empty()) throw CommandError("run needs --config FILE");
@@ -79,7 +83,8 @@ NavProcess::NavProcess(const RunOptions& options)
   for (std::size_t i = 0; i < endpoints.size(); ++i) {
     auto recorder = recorder_ ? recorder_->open_stream(i, endpoints[i].text) : nullptr;
     inputs_.push_back(std::make_unique<InputReader>(std::move(endpoints[i]), static_cast<std::uint16_t>(i), queue_,
-                                                    options_.configure_device, std::move(recorder), pacer_.get()));
+                                                    options_.configure_device ? &config_ : nullptr, std::move(recorder),
+                                                    pacer_.get()));
   }
   if (!options_.fe_out.empty()) {
     outputs_.push_back(std::make_unique<OutputSink>(
@@ -212,9 +217,21 @@ void NavProcess::apply_actions() {
         runner_->engine().reset(a.reset_mask);
         log_event("filter reset by command (mask " + std::to_string(a.reset_mask) + ")");
         break;
-      case EngineAction::Kind::kGnssLeverArm: runner_->engine().set_gnss_lever_arm(a.vector, a.antenna); break;
-      case EngineAction::Kind::kMounting: runner_->engine().set_mounting(a.vector); break;
-      case EngineAction::Kind::kWheelLeverArm: runner_->engine().set_wheel_lever_arm(a.vector); break;
+      // Installation geometry a client set on an output link: logged, so that whoever configured
+      // navfuse as a device can see what it took (run --configure-device of another process).
+      case EngineAction::Kind::kGnssLeverArm:
+        runner_->engine().set_gnss_lever_arm(a.vector, a.antenna);
+        log_event("GNSS lever arm of antenna " + std::to_string(a.antenna) + " set by command to " +
+                  vector_text(a.vector) + " m (vehicle FRD)");
+        break;
+      case EngineAction::Kind::kMounting:
+        runner_->engine().set_mounting(a.vector);
+        log_event("mounting set by command to roll, pitch, yaw " + vector_text(a.vector * rot::kRadToDeg) + " deg");
+        break;
+      case EngineAction::Kind::kWheelLeverArm:
+        runner_->engine().set_wheel_lever_arm(a.vector);
+        log_event("wheel lever arm set by command to " + vector_text(a.vector) + " m (vehicle FRD)");
+        break;
       case EngineAction::Kind::kNonholonomic: runner_->engine().set_nonholonomic(a.enable); break;
       case EngineAction::Kind::kAiding: runner_->engine().set_aiding(a.aiding, a.enable); break;
       case EngineAction::Kind::kInitialHeading:
@@ -242,6 +259,13 @@ void NavProcess::report_status() {
   const StatusInputs in{engine.solution(), engine.stats(), snapshots_, queue_full, runner_->gated_total(),
                         output_drops, latency_.take_window()};
   lcm_->post_status(status_.make(in, now));
+}
+
+std::string NavProcess::setup_error() const {
+  for (const auto& in : inputs_) {
+    if (in->setup_failed()) return in->setup_error();
+  }
+  return {};
 }
 
 std::vector<std::string> NavProcess::output_errors() const {

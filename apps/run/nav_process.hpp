@@ -53,6 +53,9 @@ class NavProcess final : private FusionObserver {
   void stop();
   // Inputs, measurements decoded / used / rejected and run statistics (complete after stop()).
   Summary summary() const;
+  // --configure-device: the first input whose device refused its set-up or did not read back a
+  // setting as written, with the error; "" while none has.
+  std::string setup_error() const;
   // After stop(): the write error of each file output that lost bytes (OutputSink::write_error).
   std::vector<std::string> output_errors() const;
 

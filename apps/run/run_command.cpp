@@ -37,6 +37,10 @@ int run_nav_process(const RunOptions& options) {
       log_event("every input has ended: stopping");
       break;
     }
+    if (!process.setup_error().empty()) {
+      log_event("a device is not set up as configured: stopping");
+      break;
+    }
   }
   process.stop();
   Summary summary = process.summary();
@@ -44,6 +48,9 @@ int run_nav_process(const RunOptions& options) {
   if (!output_errors.empty()) summary.extra["output_errors"] = output_errors;
   if (!options.summary_json.empty()) write_json_file(options.summary_json, summary.to_json(/*decode_only=*/false));
   if (!options.quiet) summary.print(std::cerr, /*decode_only=*/false);
+  // A device that refused its set-up or holds other settings than the config's is a failed run:
+  // its data were not what navfuse was configured for (issue 17).
+  if (const std::string setup = process.setup_error(); !setup.empty()) throw CommandError(setup);
   // An output file that lost bytes is a failed run, whatever else went well (issue 15.7).
   if (!output_errors.empty()) {
     std::string what = output_errors.front();
@@ -90,7 +97,12 @@ void add_run_command(CLI::App& root, int& exit_code) {
       sub->add_option("--lcm", opt->lcm_url, "Publish NAVFUSE_POSE/STATUS/IMU/GNSS and take NAVFUSE_AID_* on LCM [URL]")
           ->expected(0, 1);
   sub->add_flag("--configure-device", opt->configure_device,
-                "Send each input device its set-up sequence so that it streams what fusion needs");
+                "Send each input device its set-up sequence so that it streams what fusion needs, and the "
+                "installation geometry of the config (VN-300: Reg 57 antenna A offset, Reg 93 baseline; CV7: "
+                "0x0D,0x54 antenna offsets, 0x0D,0x61 speed lever arm; FusionEngine: device, GNSS and GNSS aux "
+                "lever arms and the IMUOutput/Pose/GNSSInfo rates), each read back and compared; a refusal or a mismatch ends the run with an error. "
+                "Mounting is not sent: navfuse rotates the IMU data by imu.mounting_rpy_deg itself (a VN-300 "
+                "Reg 26 rotation would also need a reset to take effect)");
   sub->add_option("--status-interval", opt->status_interval_s, "NAVFUSE_STATUS period, s (default 1)");
   sub->add_option("--summary-json", opt->summary_json, "At exit, write the run summary as JSON to this file");
   sub->add_option("--record", opt->record_dir,

@@ -14,6 +14,7 @@
 #include "core/config/config.hpp"
 #include "frontends/common/device_command.hpp"
 #include "frontends/common/device_error_class.hpp"
+#include "frontends/common/setup_step.hpp"
 #include "frontends/common/stream_decoder.hpp"
 
 namespace navfuse::frontends {
@@ -33,8 +34,9 @@ struct FrontendInfo {
   config::DeviceProfile default_profile = config::DeviceProfile::kGeneric;
 
   // `navfuse run --configure-device`: the commands that make a fresh device stream what fusion
-  // needs, sent when the input link opens. nullptr when the device needs none.
-  std::vector<DeviceCommand> (*setup_commands)() = nullptr;
+  // needs and give it the installation geometry of `config` (lever arms, baseline), each write
+  // read back and checked; sent when the input link opens. nullptr when the device needs none.
+  std::vector<SetupStep> (*setup_steps)(const config::Config& config) = nullptr;
   // Looks through the bytes received after a set-up command for the device's refusal; returns a
   // one-line description of the first one, "" when there is none. nullptr: replies not checked.
   std::string (*find_refusal)(std::span<const std::uint8_t> reply_bytes) = nullptr;
@@ -62,7 +64,7 @@ constexpr FrontendInfo file_reader_info(std::string_view format, std::string_vie
       .make_decoder = make_decoder,
       .make_encoder = nullptr,
       .default_profile = config::DeviceProfile::kGeneric,
-      .setup_commands = nullptr,
+      .setup_steps = nullptr,
       .find_refusal = nullptr,
       .device_errors = {},
       .odometry_input = false,

@@ -2,6 +2,12 @@
 
 namespace navfuse::frontends::fusionengine {
 
+Point3f point_from_frd(const std::array<double, 3>& frd_m) {
+  return {{static_cast<float>(frd_m[0]), static_cast<float>(-frd_m[1]), static_cast<float>(-frd_m[2])}};
+}
+
+std::array<double, 3> frd_from_point(const Point3f& p) { return {p.xyz_m[0], -p.xyz_m[1], -p.xyz_m[2]}; }
+
 std::string_view to_string(ConfigType t) {
   switch (t) {
     case ConfigType::kInvalid: return "Invalid";

@@ -58,6 +58,11 @@ struct Point3f {
   }
 };
 
+// navfuse config lever arms are vehicle FRD, FusionEngine's Point3f FLU body (spec L635-653,
+// L1039-1044): y and z change sign.
+Point3f point_from_frd(const std::array<double, 3>& frd_m);
+std::array<double, 3> frd_from_point(const Point3f& p);
+
 // CoarseOrientation (L1046-1067): directions of the IMU +X and +Z axes in the vehicle body.
 enum class Direction : std::uint8_t {
   kForward = 0, kBackward = 1, kLeft = 2, kRight = 3, kUp = 4, kDown = 5, kInvalid = 0xFF,

@@ -1,6 +1,7 @@
 #include "frontends/fusionengine/frontend.hpp"
 
 #include "core/rotation/rotation.hpp"
+#include "frontends/fusionengine/commands.hpp"
 #include "frontends/fusionengine/decoder.hpp"
 #include "frontends/fusionengine/encoder.hpp"
 #include "frontends/fusionengine/framer.hpp"
@@ -28,7 +29,10 @@ const FrontendInfo& frontend() {
       .make_decoder = &make_decoder,
       .make_encoder = &make_encoder,
       .default_profile = config::DeviceProfile::kFusionEngine,
-      // No set-up: a FusionEngine device streams poses and measurements by default.
+      // A FusionEngine device streams poses and measurements by default: the set-up is the
+      // installation geometry and the rates of the messages navfuse decodes (commands.hpp).
+      .setup_steps = &fusion_setup_steps,
+      .find_refusal = &find_refusal,
       // Device solution of a Point One GNSS/INS with corrections, 10 Hz: typical of the class,
       // not datasheet guarantees.
       .device_errors = {.horizontal_std_m = 0.5,

@@ -11,14 +11,9 @@ namespace {
 using rot::kDegToRad;
 using rot::kRadToDeg;
 
-// Lever arms: FusionEngine Point3f is FLU body (spec L1039-1044), navfuse config FRD.
-Point3f point_from(const config::Vec3& frd) {
-  return {{static_cast<float>(frd[0]), static_cast<float>(-frd[1]), static_cast<float>(-frd[2])}};
-}
 bool finite(const Point3f& p) {
   return std::isfinite(p.xyz_m[0]) && std::isfinite(p.xyz_m[1]) && std::isfinite(p.xyz_m[2]);
 }
-config::Vec3 vec_from(const Point3f& p) { return {p.xyz_m[0], -p.xyz_m[1], -p.xyz_m[2]}; }
 
 // CoarseOrientation directions as FLU unit vectors (spec L1056-1065).
 std::optional<Eigen::Vector3d> axis_of(std::uint8_t d) {
@@ -66,9 +61,9 @@ std::optional<C> parse_exact(std::span<const std::uint8_t> value) {
 }  // namespace
 
 bool DeviceControl::State::operator==(const State& o) const {
-  return pack_config(point_from(config.gnss.lever_arm_m)) == pack_config(point_from(o.config.gnss.lever_arm_m)) &&
-         pack_config(point_from(config.gnss.secondary_lever_arm_m)) ==
-             pack_config(point_from(o.config.gnss.secondary_lever_arm_m)) &&
+  return pack_config(point_from_frd(config.gnss.lever_arm_m)) == pack_config(point_from_frd(o.config.gnss.lever_arm_m)) &&
+         pack_config(point_from_frd(config.gnss.secondary_lever_arm_m)) ==
+             pack_config(point_from_frd(o.config.gnss.secondary_lever_arm_m)) &&
          config.imu.mounting_rpy_deg == o.config.imu.mounting_rpy_deg &&
          pack_config(device_lever_arm) == pack_config(o.device_lever_arm) &&
          pack_config(output_lever_arm) == pack_config(o.output_lever_arm) &&
@@ -103,8 +98,8 @@ std::optional<std::vector<std::uint8_t>> DeviceControl::config_value(const State
   switch (static_cast<ConfigType>(type)) {
     case ConfigType::kDeviceLeverArm: return pack_config(s.device_lever_arm);
     case ConfigType::kOutputLeverArm: return pack_config(s.output_lever_arm);
-    case ConfigType::kGnssLeverArm: return pack_config(point_from(s.config.gnss.lever_arm_m));
-    case ConfigType::kGnssAuxLeverArm: return pack_config(point_from(s.config.gnss.secondary_lever_arm_m));
+    case ConfigType::kGnssLeverArm: return pack_config(point_from_frd(s.config.gnss.lever_arm_m));
+    case ConfigType::kGnssAuxLeverArm: return pack_config(point_from_frd(s.config.gnss.secondary_lever_arm_m));
     case ConfigType::kDeviceCoarseOrientation: return pack_config(orientation_from(s.config.imu.mounting_rpy_deg));
     case ConfigType::kVehicleDetails: return pack_config(s.vehicle);
     case ConfigType::kWheelConfig: return pack_config(s.wheel);
@@ -125,8 +120,8 @@ Response DeviceControl::apply_config_value(State& s, std::uint16_t type, std::sp
       if (!p || !finite(*p)) return Response::kValueError;
       if (type == to_u16(ConfigType::kDeviceLeverArm)) s.device_lever_arm = *p;
       if (type == to_u16(ConfigType::kOutputLeverArm)) s.output_lever_arm = *p;
-      if (type == to_u16(ConfigType::kGnssLeverArm)) s.config.gnss.lever_arm_m = vec_from(*p);
-      if (type == to_u16(ConfigType::kGnssAuxLeverArm)) s.config.gnss.secondary_lever_arm_m = vec_from(*p);
+      if (type == to_u16(ConfigType::kGnssLeverArm)) s.config.gnss.lever_arm_m = frd_from_point(*p);
+      if (type == to_u16(ConfigType::kGnssAuxLeverArm)) s.config.gnss.secondary_lever_arm_m = frd_from_point(*p);
       return Response::kOk;
     }
     case ConfigType::kDeviceCoarseOrientation: {

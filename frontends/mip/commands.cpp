@@ -16,7 +16,8 @@ constexpr std::uint8_t kPing = 0x01, kIdle = 0x02, kDeviceInfo = 0x03, kResume =
 constexpr std::uint8_t kBaseRate = 0x0E, kMessageFormat = 0x0F, kStreamControl = 0x11, kStartupSettings = 0x30,
                        kSensorToVehicleEuler = 0x31;
 constexpr std::uint8_t kResetFilter = 0x01, kRunFilter = 0x05, kAidingControl = 0x50, kFilterInit = 0x52,
-                       kMultiAntennaOffset = 0x54;
+                       kMultiAntennaOffset = 0x54, kSpeedLeverArm = 0x61;
+constexpr std::uint8_t kSpeedSource = 1;  // (0x0D,0x61) source: "reserved, must be 1" (L8688)
 constexpr std::uint8_t kTimeFieldWeek = 1, kTimeFieldTow = 2;  // (0x01,0x72) field_id (L8160)
 constexpr std::uint8_t kAutoPosVelAtt = 0;                     // (0x0D,0x52) initial_cond_src
 constexpr std::uint8_t kLlhFrame = 2;                          // reference_frame_selector
@@ -95,6 +96,17 @@ Command sensor_to_vehicle_euler(const Eigen::Vector3d& rpy_rad) {
 Command antenna_offset(std::uint8_t receiver_id, const Eigen::Vector3d& offset_m) {
   return {set::kFilterCmd, kMultiAntennaOffset,
           {fn(Function::kWrite), u(receiver_id), d(offset_m.x()), d(offset_m.y()), d(offset_m.z())}};
+}
+
+Command speed_lever_arm(const Eigen::Vector3d& offset_m) {
+  return {set::kFilterCmd, kSpeedLeverArm,
+          {fn(Function::kWrite), u(kSpeedSource), d(offset_m.x()), d(offset_m.y()), d(offset_m.z())}};
+}
+
+Command read_of(const Command& write, std::size_t key_params) {
+  Command read{write.desc_set, write.desc, {fn(Function::kRead)}};
+  for (std::size_t i = 1; i <= key_params && i < write.values.size(); ++i) read.values.push_back(write.values[i]);
+  return read;
 }
 
 Command aiding_control(std::uint16_t aiding_source, bool enable) {

@@ -44,6 +44,10 @@ Command stream_enable(std::uint8_t data_set, bool enable);                      
 Command save_all_settings();                                                         // (0x0C,0x30) save
 Command sensor_to_vehicle_euler(const Eigen::Vector3d& rpy_rad);                    // (0x0C,0x31) write
 Command antenna_offset(std::uint8_t receiver_id, const Eigen::Vector3d& offset_m);  // (0x0D,0x54) write
+Command speed_lever_arm(const Eigen::Vector3d& offset_m);  // (0x0D,0x61) write, source 1 ("must be 1", L8688)
+// The Read (0x02) of a settings command: its function selector and first `key_params` parameters
+// only (digest §2.6: other selectors than Write send only the key, e.g. the receiver id).
+Command read_of(const Command& write, std::size_t key_params);
 Command aiding_control(std::uint16_t aiding_source, bool enable);                    // (0x0D,0x50) write
 Command reset_filter();                                                              // (0x0D,0x01)
 Command run_filter();                                                                // (0x0D,0x05)

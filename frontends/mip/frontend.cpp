@@ -2,6 +2,7 @@
 
 #include "core/rotation/rotation.hpp"
 #include "frontends/mip/commands.hpp"
+#include "frontends/mip/commands_geometry.hpp"
 #include "frontends/mip/decoder.hpp"
 #include "frontends/mip/encoder.hpp"
 #include "frontends/mip/framer.hpp"
@@ -17,7 +18,6 @@ std::size_t probe(std::span<const std::uint8_t> head) {
 
 std::unique_ptr<StreamDecoder> make_decoder() { return std::make_unique<MipDecoder>(); }
 std::unique_ptr<MeasurementEncoder> make_encoder() { return std::make_unique<MipEncoder>(); }
-std::vector<DeviceCommand> setup_commands() { return cv7_setup_sequence(); }
 
 }  // namespace
 
@@ -29,7 +29,7 @@ const FrontendInfo& frontend() {
       .make_decoder = &make_decoder,
       .make_encoder = &make_encoder,
       .default_profile = config::DeviceProfile::kCv7,
-      .setup_commands = &setup_commands,
+      .setup_steps = &cv7_setup_steps,
       .find_refusal = &find_refusal,
       // 3DM-CV7-INS, single antenna, INS output with the IMU: typical of the class, not datasheet
       // guarantees.

@@ -34,6 +34,23 @@ constexpr ResponseMap kResponses[] = {
 };
 
 constexpr std::uint8_t kSpeedLeverArm = 0x61;  // (0x0D,0x61)
+// Lever arms with a documented 10 m magnitude limit (digest §6.9: 0x0D,0x13 L8276, 0x0D,0x54
+// L8617, 0x0D,0x56 L8665) and the offset of their Vector3f in the written data.
+constexpr std::uint8_t kAntennaOffset = 0x13, kMultiAntennaOffset = 0x54, kReferencePointLeverArm = 0x56;
+constexpr double kMaxLeverArmM = 10.0;
+
+// True when a Write of a limited lever arm asks for more than 10 m: the device refuses it.
+bool lever_arm_beyond_limit(std::uint8_t desc, std::span<const std::uint8_t> data) {
+  std::size_t at = 0;
+  switch (desc) {
+    case kAntennaOffset: at = 1; break;
+    case kMultiAntennaOffset: case kReferencePointLeverArm: at = 2; break;
+    default: return false;
+  }
+  bytes::Reader<bytes::Endian::kBig> r(data.subspan(std::min(at, data.size())));
+  const double x = r.f32(), y = r.f32(), z = r.f32();
+  return !r.ok() || !(std::sqrt(x * x + y * y + z * z) <= kMaxLeverArmM);
+}
 constexpr std::uint8_t kAidingControl = 0x50;  // (0x0D,0x50)
 constexpr std::uint8_t kInitialHeading = 0x03;  // (0x0D,0x03): heading [rad] in [-pi, pi] (digest §6.4)
 constexpr std::uint16_t kLastAidingSource = 8;  // BODY_FRAME_VEL; 0xFFFF (ALL) is not for Write (digest §6.5)
@@ -220,6 +237,7 @@ ReplyCode CommandResponder::handle_command(std::uint8_t desc_set, std::uint8_t d
       }
       // Speed measurement lever arm: "source ... reserved, must be 1" (digest §6.15, L8688).
       if (desc_set == set::kFilterCmd && desc == kSpeedLeverArm && data[1] != 1) return ReplyCode::kInvalidParameter;
+      if (desc_set == set::kFilterCmd && lever_arm_beyond_limit(desc, data)) return ReplyCode::kInvalidParameter;
       if (desc_set == set::kFilterCmd && desc == kAidingControl && ((data[1] << 8) | data[2]) > kLastAidingSource) {
         return ReplyCode::kInvalidParameter;
       }

@@ -8,7 +8,8 @@
 // AidingCommandHandler whose measurements are handed back. Unknown descriptors are NACKed
 // "unknown command", a bad checksum "bad checksum", a set without commands "unknown descriptor set".
 // A sensor-to-vehicle quaternion or DCM that is no rotation is NACKed "invalid parameter"
-// (frontends/mip/sensor_to_vehicle.hpp). Commands the owner cannot carry out (refuse()) are
+// (frontends/mip/sensor_to_vehicle.hpp), an antenna offset or reference-point lever arm longer
+// than the documented 10 m likewise. Commands the owner cannot carry out (refuse()) are
 // NACKed "command failed" rather than acknowledged and ignored.
 #pragma once
 

@@ -44,7 +44,13 @@ std::size_t probe(std::span<const std::uint8_t> head) {
 
 std::unique_ptr<StreamDecoder> make_decoder() { return std::make_unique<UnicoreDecoder>(); }
 std::unique_ptr<MeasurementEncoder> make_encoder() { return std::make_unique<UnicoreEncoder>(); }
-std::vector<DeviceCommand> setup_commands() { return commands_from_sentences(fusion_setup_commands()); }
+// No installation geometry: the UM220-INS protocol has no lever-arm command (digest §1, "no
+// lever-arm command"; spec R2.8 lists none), and its one installation command, CFGROTAT
+// (L522-572), sets the module's own mounting angles to within 10 deg for its solution, which
+// navfuse does not fuse (it rotates GYOACC by imu.mounting_rpy_deg itself).
+std::vector<SetupStep> setup_steps(const config::Config&) {
+  return steps_from_commands(commands_from_sentences(fusion_setup_commands()));
+}
 
 }  // namespace
 
@@ -56,7 +62,7 @@ const FrontendInfo& frontend() {
       .make_decoder = &make_decoder,
       .make_encoder = &make_encoder,
       .default_profile = config::DeviceProfile::kUm220,
-      .setup_commands = &setup_commands,
+      .setup_steps = &setup_steps,
       .find_refusal = &find_refusal,
       // UM220-INS, automotive MEMS, 5 Hz solution: typical of the class, not datasheet guarantees.
       .device_errors = {.horizontal_std_m = 1.5,

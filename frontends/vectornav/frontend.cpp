@@ -2,6 +2,7 @@
 
 #include "core/rotation/rotation.hpp"
 #include "frontends/vectornav/commands.hpp"
+#include "frontends/vectornav/commands_geometry.hpp"
 #include "frontends/vectornav/decoder.hpp"
 #include "frontends/vectornav/encoder.hpp"
 #include "frontends/vectornav/framer.hpp"
@@ -9,7 +10,6 @@
 namespace navfuse::frontends::vectornav {
 namespace {
 constexpr std::string_view kAsciiVectorNav = "$VN";
-std::vector<DeviceCommand> setup_commands() { return commands_from_sentences(cmd::fusion_setup_commands({})); }
 }  // namespace
 
 std::size_t probe_vectornav(std::span<const std::uint8_t> head) {
@@ -35,7 +35,7 @@ const FrontendInfo& frontend() {
       .make_decoder = []() -> std::unique_ptr<StreamDecoder> { return std::make_unique<VnStreamDecoder>(); },
       .make_encoder = []() -> std::unique_ptr<MeasurementEncoder> { return std::make_unique<VnMeasurementEncoder>(); },
       .default_profile = config::DeviceProfile::kVn300,
-      .setup_commands = &setup_commands,
+      .setup_steps = &cmd::fusion_setup_steps,
       .find_refusal = &cmd::find_refusal,
       // VN-300, dual antenna, industrial MEMS, INS output with the IMU: typical of the class, not
       // datasheet guarantees.

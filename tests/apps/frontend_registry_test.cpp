@@ -31,20 +31,25 @@ TEST(FrontendRegistry, EveryFrontendIsCompleteAndNamesItsDeviceProfile) {
     EXPECT_EQ(f->make_decoder()->format(), f->format);
     EXPECT_EQ(std::optional(f->default_profile), config::device_profile_from_string(device_of.at(std::string(f->format))));
     // A set-up sequence and its reply check come together.
-    EXPECT_EQ(f->setup_commands == nullptr, f->find_refusal == nullptr);
+    EXPECT_EQ(f->setup_steps == nullptr, f->find_refusal == nullptr);
   }
 }
 
 TEST(FrontendRegistry, SetUpIsSentToTheDevicesThatNeedIt) {
-  // VN-300, CV7 and UM220 must be told what to stream; a FusionEngine device streams poses and
-  // measurements by default (apps/run/device_setup.hpp).
-  for (const char* format : {"vn", "mip", "unicore"}) {
+  // VN-300, CV7 and UM220 must be told what to stream; every device but the UM220 (which has no
+  // lever-arm command) is given the installation geometry, read back: a FusionEngine device,
+  // which streams by default, gets only that (apps/run/device_setup.hpp).
+  const config::Config config;
+  for (const char* format : {"vn", "mip", "unicore", "fe"}) {
     const frontends::FrontendInfo* f = find_frontend(format);
     ASSERT_NE(f, nullptr);
-    ASSERT_NE(f->setup_commands, nullptr) << format;
-    EXPECT_FALSE(f->setup_commands().empty()) << format;
+    ASSERT_NE(f->setup_steps, nullptr) << format;
+    const auto steps = f->setup_steps(config);
+    EXPECT_FALSE(steps.empty()) << format;
+    std::size_t read_backs = 0;
+    for (const auto& s : steps) read_backs += s.verify ? 1 : 0;
+    EXPECT_EQ(read_backs > 0, std::string_view(format) != "unicore") << format;
   }
-  EXPECT_EQ(find_frontend("fe")->setup_commands, nullptr);
 }
 
 TEST(FrontendRegistry, SimFindsFormatsOdometryAndSolutionRates) {

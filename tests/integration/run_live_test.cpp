@@ -246,33 +246,5 @@ TEST_F(RunLiveTest, SerialDeviceLcmAidingFeCommandsReplugAndSigterm) {
   EXPECT_TRUE(fe.closed());
 }
 
-// --configure-device: a fresh VN-300 gets its fusion set-up (binary output registers) on the
-// serial link as soon as the port opens; the process then runs on, and SIGTERM ends it with 0.
-TEST_F(RunLiveTest, ConfigureDeviceSendsTheVn300SetUp) {
-  const std::string config = write_file(dir_ / "vn300.yaml", "device: vn300\n");
-  PtyDevice device((dir_ / "ttyVN").string());
-  ChildProcess nav({navfuse_binary(), "run", "--config", config, "--in", "vn:serial:" + device.link() + "?baud=921600",
-                    "--configure-device", "--quiet"},
-                   (dir_ / "nav.log").string());
-  std::string received;
-  const io::Deadline deadline(kTimeoutMs);
-  while (received.find("$VNWRG,76") == std::string::npos && !deadline.expired()) {
-    pollfd p{device.master(), POLLIN, 0};
-    if (::poll(&p, 1, 50) <= 0) continue;
-    char buf[1024];
-    const ssize_t n = ::read(device.master(), buf, sizeof buf);
-    if (n > 0) received.append(buf, static_cast<std::size_t>(n));
-  }
-  EXPECT_NE(received.find("$VNASY,0"), std::string::npos) << received;  // output paused first
-  EXPECT_NE(received.find("$VNWRG,75"), std::string::npos) << received;  // binary output 1: IMU
-  EXPECT_NE(received.find("$VNWRG,76"), std::string::npos) << received;  // binary output 2: GNSS
-  ASSERT_TRUE(nav.wait_for_output("device set-up", kTimeoutMs)) << nav.output();
-  device.release_slave();
-  nav.send(SIGTERM);
-  const auto code = nav.wait_exit(5000);
-  ASSERT_TRUE(code.has_value());
-  EXPECT_EQ(*code, 0) << nav.output();
-}
-
 }  // namespace
 }  // namespace navfuse::test
