@@ -258,6 +258,8 @@ const FilterStats& Engine::stats() const {
   stats_view_.covariance_inflations = core_.adaptation.inflations;
   stats_view_.process_noise_scale = core_.adaptation.process_noise_scale;
   stats_view_.max_process_noise_scale = core_.adaptation.max_process_noise_scale;
+  stats_view_.max_gnss_position_noise_scale = core_.adaptation.position_noise.max_scale;
+  stats_view_.max_gnss_velocity_noise_scale = core_.adaptation.velocity_noise.max_scale;
   return stats_view_;
 }
 

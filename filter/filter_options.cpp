@@ -81,6 +81,7 @@ FilterOptions options_from_config(const navfuse::config::Config& config) {
   o.adaptation.window_s = config.adaptation.window_s;
   o.adaptation.inflate_ratio = config.adaptation.inflate_ratio;
   o.adaptation.max_process_noise_scale = config.adaptation.max_process_noise_scale;
+  o.adaptation.max_measurement_noise_scale = config.adaptation.max_measurement_noise_scale;
   o.gnss_time_offset_s = config.gnss.time_offset_s;
   o.wheel_time_offset_s = config.wheel.time_offset_s;
 

@@ -39,6 +39,9 @@ struct AdaptationOptions {
   double inflate_ratio = 3.0;   // median NIS per dimension that re-inflates P (errors 1.7x spread)
   double max_inflation = 1e4;   // largest single scaling of the P block (std x 100)
   double max_process_noise_scale = 100.0;  // random walks at most 10x the data sheet's std
+  // Largest multiplier on an aid's reported variances (measurement_noise_adaptation.hpp):
+  // std devs at most 10x what the receiver claims.
+  double max_measurement_noise_scale = 100.0;
   double process_noise_gain = 0.25;        // exponent per sample of the scale's adaptation
 };
 

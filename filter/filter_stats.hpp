@@ -66,6 +66,10 @@ struct FilterStats {
   std::uint64_t covariance_inflations = 0;  // over-confidence repaired (innovation_adaptation)
   double process_noise_scale = 1.0;         // current adaptive multiplier on the random walks
   double max_process_noise_scale = 1.0;     // largest it reached
+  // Largest multiplier put on the GNSS position / velocity variances as reported
+  // (control/measurement_noise_adaptation.hpp).
+  double max_gnss_position_noise_scale = 1.0;
+  double max_gnss_velocity_noise_scale = 1.0;
 
   const KindStats& of(MeasurementKind k) const { return kinds[static_cast<std::size_t>(k)]; }
   KindStats& of(MeasurementKind k) { return kinds[static_cast<std::size_t>(k)]; }

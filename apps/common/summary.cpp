@@ -57,7 +57,9 @@ nlohmann::ordered_json Summary::to_json(bool decode_only) const {
     j["filter"] = {{"covariance_inflations", adaptation->covariance_inflations},
                    {"process_noise_scale", adaptation->process_noise_scale},
                    {"max_process_noise_scale", adaptation->max_process_noise_scale},
-                   {"gnss_recoveries", adaptation->gnss_recoveries}};
+                   {"gnss_recoveries", adaptation->gnss_recoveries},
+                   {"max_gnss_position_noise_scale", adaptation->max_gnss_position_noise_scale},
+                   {"max_gnss_velocity_noise_scale", adaptation->max_gnss_velocity_noise_scale}};
   }
   if (!calibration.empty() && !decode_only) {
     nlohmann::ordered_json c = nlohmann::ordered_json::object();
@@ -137,11 +139,14 @@ void Summary::print_innovations(std::ostream& os) const {
        << std::defaultfloat;
   }
   if (adaptation && (adaptation->covariance_inflations > 0 || adaptation->max_process_noise_scale > 1.0 ||
-                     adaptation->gnss_recoveries > 0)) {
+                     adaptation->gnss_recoveries > 0 || adaptation->max_gnss_position_noise_scale > 1.0 ||
+                     adaptation->max_gnss_velocity_noise_scale > 1.0)) {
     os << "filter adaptation: " << adaptation->covariance_inflations << " covariance re-inflations, "
        << adaptation->gnss_recoveries << " GNSS re-anchors; process noise scale " << std::fixed
        << std::setprecision(2) << adaptation->process_noise_scale << " at the end (max "
-       << adaptation->max_process_noise_scale << ")\n"
+       << adaptation->max_process_noise_scale << "); GNSS variances scaled up to "
+       << adaptation->max_gnss_position_noise_scale << "x (position), " << adaptation->max_gnss_velocity_noise_scale
+       << "x (velocity)\n"
        << std::defaultfloat;
   }
 }

@@ -4,7 +4,8 @@
 // bad_frames, skipped_bytes}, measurements {kind: {decoded, used, rejected{reason: n}}},
 // run {wall_s, imu_samples_per_s, modes_reached}. Added beside them: measurements.KIND.innovation
 // {count, mean_nis, mean_nis_per_dim, fraction_above_gate}, measurements.KIND.pending_at_end,
-// filter {covariance_inflations, process_noise_scale, max_process_noise_scale, gnss_recoveries}
+// filter {covariance_inflations, process_noise_scale, max_process_noise_scale, gnss_recoveries,
+//         max_gnss_position_noise_scale, max_gnss_velocity_noise_scale}
 // and calibration {the CSV's calibration column names: value} at the end of the run.
 #pragma once
 
@@ -52,6 +53,9 @@ struct AdaptationSummary {
   double process_noise_scale = 1.0;  // at the end
   double max_process_noise_scale = 1.0;
   std::uint64_t gnss_recoveries = 0;  // re-anchored to GNSS after sustained rejection
+  // Largest multipliers on the reported GNSS variances (control/measurement_noise_adaptation.hpp).
+  double max_gnss_position_noise_scale = 1.0;
+  double max_gnss_velocity_noise_scale = 1.0;
 };
 
 struct RunStats {

@@ -28,8 +28,10 @@ void fill_measurement_counts(const filter::Engine& engine, const MeasurementCoun
                                         fs.innovation.mean_nis_per_dim(), fs.innovation.fraction_above_gate()};
     }
   }
-  summary.adaptation = AdaptationSummary{stats.covariance_inflations, stats.process_noise_scale,
-                                         stats.max_process_noise_scale, stats.gnss_recoveries};
+  summary.adaptation =
+      AdaptationSummary{stats.covariance_inflations,          stats.process_noise_scale,
+                        stats.max_process_noise_scale,        stats.gnss_recoveries,
+                        stats.max_gnss_position_noise_scale, stats.max_gnss_velocity_noise_scale};
 }
 
 }  // namespace navfuse::apps

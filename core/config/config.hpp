@@ -139,6 +139,7 @@ struct AdaptationConfig {
   double window_s = 1.0;                   // innovations looked at for "persistently"
   double inflate_ratio = 3.0;              // median NIS per dimension that re-inflates P
   double max_process_noise_scale = 100.0;  // 1: data-sheet noise only, no adaptation of Q
+  double max_measurement_noise_scale = 100.0;  // 1: the receivers' std devs as reported
 };
 
 // Magnetometer heading aiding (filter/control/magnetometer_control.hpp). Off unless a heading

@@ -182,6 +182,8 @@ const KeyBinding kKeys[] = {
                        "median NIS per dimension that re-inflates P (3: innovations 1.7x their std)"),
     NAVFUSE_CONFIG_KEY(adaptation.max_process_noise_scale, kRatio,
                        "largest multiplier on the IMU noise variances (1: data sheet only)"),
+    NAVFUSE_CONFIG_KEY(adaptation.max_measurement_noise_scale, kRatio,
+                       "largest multiplier on GNSS reported variances when they prove optimistic (1: as reported)"),
     NAVFUSE_CONFIG_KEY(magnetometer.heading_std_deg, kHeadingStdDeg,
                        "magnetic heading noise, 1 sigma (deg; ~: magnetometer not fused)"),
     NAVFUSE_CONFIG_KEY(magnetometer.declination_deg, kDeclinationDeg,

@@ -67,6 +67,8 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
       c.view(shift_s), m, antenna_of_receiver(c.x, o.gnss_secondary_lever_arm_m, m.receiver_id));
   const double std_scale = o.gnss_position_std_scale_for(m.fix);
   obs.r *= std_scale * std_scale;
+  c.flush_covariance(o);
+  obs.r *= update_noise_scale(c.adaptation.position_noise, c.ekf, obs, o.adaptation, c.gate_for(o, obs.rows()));
   adapt_to_innovation(c, o, c.adaptation.position, obs, now);
   const FuseResult r = c.apply(o, obs, c.gate_for(o, obs.rows()));
   if (r.used) {
@@ -119,6 +121,8 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssVelocity& m,
   Observation obs = gnss_velocity_observation(
       c.view(shift_s), m, antenna_of_receiver(c.x, o.gnss_secondary_lever_arm_m, m.receiver_id));
   obs.r = cov;
+  c.flush_covariance(o);
+  obs.r *= update_noise_scale(c.adaptation.velocity_noise, c.ekf, obs, o.adaptation, c.gate_for(o, obs.rows()));
   adapt_to_innovation(c, o, c.adaptation.velocity, obs, now);
   const FuseResult r = c.apply(o, obs, c.gate_for(o, obs.rows()));
   if (r.used) {

@@ -33,6 +33,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "filter/control/measurement_noise_adaptation.hpp"
 #include "filter/ekf.hpp"
 #include "filter/filter_options.hpp"
 
@@ -72,6 +73,8 @@ struct InnovationWindow {
 struct AdaptationState {
   InnovationWindow position;
   InnovationWindow velocity;
+  NoiseScaleWindow position_noise;  // GNSS position R multiplier
+  NoiseScaleWindow velocity_noise;  // GNSS velocity R multiplier
   double process_noise_scale = 1.0;
   double max_process_noise_scale = 1.0;  // largest reached, for the summary
   std::uint64_t inflations = 0;
