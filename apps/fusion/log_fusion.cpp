@@ -13,7 +13,7 @@ Summary fuse_log(MeasurementMerger& merger, FusionRunner& runner, FusionObserver
   ProgressBar bar(merger.total_bytes(), options.progress_bar);
   ProgressLines lines(merger.total_bytes(), options.progress_lines_label);
 
-  // One-time set-up outside the timed loop: the solution's geoid undulation reads a 4 MB grid
+  // One-time set-up outside the timed loop: the solution's geoid undulation maps its 4 MB grid
   // on first use, which would otherwise count as processing time in a short replay.
   geo::GeoidGrid::egm96();
 

@@ -19,6 +19,9 @@ namespace {
 
 // Large enough that a pose stream at several MB/s costs few write(2) calls.
 constexpr std::size_t kFileBufferBytes = 1 << 20;
+// A regular file's writeback is started every this many bytes, by the thread that writes them
+// (see OutputFile::write).
+constexpr std::uint64_t kWritebackStartBytes = 4 << 20;
 // Streams (pipes, terminals, devices) see data in pieces this size, not a megabyte at a time.
 constexpr std::size_t kStreamBufferBytes = 1 << 16;
 // One write(2) to a stream after poll(2) reported room: a pipe with room takes PIPE_BUF (4096 on
@@ -101,6 +104,16 @@ void OutputFile::write(std::span<const std::uint8_t> bytes) {
   }
   if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size()) fail("write error", errno);
   bytes_ += bytes.size();
+  if (bytes_ - writeback_started_at_ >= kWritebackStartBytes) {
+    // rename(2) onto an existing file makes ext4 start writeback of every dirty page of the new
+    // file inside the call (auto_da_alloc, ext4(5)), so that a crash leaves the old or the new
+    // content: ~20 ms for a 50 MB pose stream, on the committing thread after the run. Starting
+    // it here as the bytes come (SYNC_FILE_RANGE_WRITE only queues the I/O, sync_file_range(2))
+    // does the same work on the writer's thread while the run goes on, and leaves the rename
+    // only the last pages. Advisory: an error here changes nothing the commit would report.
+    ::sync_file_range(fileno(file_), 0, 0, SYNC_FILE_RANGE_WRITE);
+    writeback_started_at_ = bytes_;
+  }
 }
 
 void OutputFile::write(std::string_view text) {

@@ -63,6 +63,7 @@ class OutputFile {
   std::vector<char> buffer_;   // stdio's buffer, or the in-place bytes not yet written
   std::size_t buffered_ = 0;   // in place: bytes of buffer_ in use
   std::uint64_t bytes_ = 0;
+  std::uint64_t writeback_started_at_ = 0;  // regular file: bytes_ when writeback was last started
   bool committed_ = false;
 };
 

@@ -6,9 +6,10 @@
 // When the grid file is absent the undulation is "invalid" (nullopt), never a guess.
 #pragma once
 
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
-#include <vector>
 
 namespace navfuse::geo {
 
@@ -28,7 +29,9 @@ class GeoidGrid {
  private:
   double lat0_deg_ = 0, lon0_deg_ = 0, dlat_deg_ = 0, dlon_deg_ = 0;
   int rows_ = 0, cols_ = 0;
-  std::vector<float> values_;
+  float node(int row, int col) const;  // the value at a node (rows from the south)
+  std::shared_ptr<const std::uint8_t> file_;  // the whole GTX file, mapped read-only
+  const std::uint8_t* nodes_ = nullptr;       // its big-endian float32 nodes, row by row
 };
 
 // Convenience: EGM96 undulation, nullopt when the grid is not installed.
