@@ -18,7 +18,11 @@ void initial_covariance(FilterCore& c, const FilterOptions& o, double tilt_std_r
   e.p.setZero();
   const auto& n = o.imu;
   e.p.block<3, 3>(sx::kPos, sx::kPos).diagonal().setConstant(1e3 * 1e3);  // until a fix
-  e.p.block<3, 3>(sx::kVel, sx::kVel).diagonal().setConstant(stationary ? 0.05 * 0.05 : 5.0 * 5.0);
+  // At rest the velocity is zero to the ZUPT noise; in motion levelling saw a steady force, which
+  // says nothing of the speed: 5 m/s covers a walker or a car creeping through a car park, and the
+  // first GNSS velocity or fixes pull it in.
+  const double vel_std = o.initial_velocity_std_mps.value_or(stationary ? 0.05 : 5.0);
+  e.p.block<3, 3>(sx::kVel, sx::kVel).diagonal().setConstant(vel_std * vel_std);
   e.p.block<3, 3>(sx::kGyroBias, sx::kGyroBias).diagonal().setConstant(
       n.initial_gyro_bias_std_rps * n.initial_gyro_bias_std_rps);
   const double ba_var = n.initial_accel_bias_std_mps2 * n.initial_accel_bias_std_mps2;
@@ -26,7 +30,10 @@ void initial_covariance(FilterCore& c, const FilterOptions& o, double tilt_std_r
   // An unknown heading is not estimated (vertical-gyro mode): zero variance until it is set.
   const double heading_std = o.initial_heading_rad ? o.initial_heading_std_rad : 0.0;
   e.p(sx::kAttDown, sx::kAttDown) = heading_std * heading_std;
-  if (stationary) {
+  if (o.initial_tilt_std_rad) {
+    // A configured prior (e.g. a platform levelled by other means) replaces the derived one.
+    e.p(sx::kAtt, sx::kAtt) = e.p(sx::kAtt + 1, sx::kAtt + 1) = *o.initial_tilt_std_rad * *o.initial_tilt_std_rad;
+  } else if (stationary) {
     // Levelling makes C_nb f = (0, 0, -g): the horizontal velocity error rate
     // [f^n x] phi - C_nb d b_a vanishes, so the tilt error is phi_tilt = A d b_a with
     // A = S C_nb / g, S = [[0, -1, 0], [1, 0, 0], [0, 0, 0]]. Its covariance follows the bias

@@ -77,6 +77,10 @@ FilterOptions options_from_config(const navfuse::config::Config& config) {
   o.level_time_s = config.alignment.level_time_s;
   o.level_timeout_s = config.alignment.level_timeout_s;
   o.initial_heading_std_rad = config.alignment.initial_heading_std_deg * rot::kDegToRad;
+  if (config.alignment.initial_tilt_std_deg) {
+    o.initial_tilt_std_rad = *config.alignment.initial_tilt_std_deg * rot::kDegToRad;
+  }
+  o.initial_velocity_std_mps = config.alignment.initial_velocity_std_mps;
   o.imu_time_offset_s = imu.time_offset_s;
   o.adaptation.window_s = config.adaptation.window_s;
   o.adaptation.inflate_ratio = config.adaptation.inflate_ratio;

@@ -122,6 +122,9 @@ struct FilterOptions {
   double level_timeout_s = 10.0;         // level from whatever was seen if never stationary
   std::optional<double> initial_heading_rad;  // configured heading source
   double initial_heading_std_rad = 5.0 * 3.14159265358979323846 / 180.0;  // its 1 sigma
+  // Configured priors once levelled; unset, alignment.cpp derives them from how it levelled.
+  std::optional<double> initial_tilt_std_rad;
+  std::optional<double> initial_velocity_std_mps;
   double kinematic_alignment_speed_mps = 2.0;
   // The course is taken as the heading only when its own noise, velocity std over speed, is
   // below this: a fast speed from a noisy velocity gives no better course than a slow one.

@@ -55,6 +55,10 @@ struct ImuConfig {
 struct GnssConfig {
   Vec3 lever_arm_m{0, 0, 0};            // primary antenna, vehicle frame
   Vec3 secondary_lever_arm_m{0, 0, 0};  // dual-antenna heading, if any
+  // Uncertainty of the baseline (secondary minus primary) per axis, for devices that take one
+  // (VN-300 Reg 93: its default 0.0254 m; Reg 97 baseline estimation needs it >= 1.75 % of the
+  // largest baseline component, VN-300 ICD L5147-5175).
+  double baseline_std_m = 0.0254;
   double time_offset_s = 0.0;           // added to GNSS timestamps (receiver latency, s)
   // Multipliers on the receiver's own position std devs, per fix type (its std devs are often
   // optimistic for some fix types: RTK float, single point); velocity std devs have one.
@@ -93,6 +97,10 @@ struct AlignmentConfig {
   std::optional<double> min_speed_mps;
   std::optional<double> initial_heading_deg;  // known heading at start (deg from north)
   double initial_heading_std_deg = 5.0;       // its 1-sigma uncertainty
+  // Roll/pitch and velocity uncertainty once levelled; unset: derived (tilt from the accelerometer
+  // bias prior and noise averaged at rest, else 2 deg; velocity 0.05 m/s at rest, else 5 m/s).
+  std::optional<double> initial_tilt_std_deg;
+  std::optional<double> initial_velocity_std_mps;
   // Heading from the course over ground; unset: on a land platform only (it assumes motion
   // along the vehicle's x axis).
   std::optional<bool> course;

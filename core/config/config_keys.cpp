@@ -116,6 +116,9 @@ const KeyBinding kKeys[] = {
     NAVFUSE_CONFIG_KEY(gnss.secondary_lever_arm_m, kLeverArmM,
                        "secondary antenna: dual-antenna heading baseline, and where the fixes of "
                        "receiver 2 (GNSS2, receiver_id 1) are measured; vehicle frame FRD (m)"),
+    NAVFUSE_CONFIG_KEY(gnss.baseline_std_m, kLeverArmStdM,
+                       "dual-antenna baseline uncertainty per axis, 1 sigma, sent by --configure-device "
+                       "(VN-300 Reg 93) (m)"),
     NAVFUSE_CONFIG_KEY(gnss.time_offset_s, kTimeOffsetS,
                        "added to GNSS timestamps (s; -0.1: fixes stamped 100 ms after their epoch)"),
     NAVFUSE_CONFIG_KEY(gnss.std_scale_rtk_fixed, kStdScale, "multiplier on RTK-fixed position std devs"),
@@ -147,6 +150,11 @@ const KeyBinding kKeys[] = {
                        "known heading at start (deg from north; ~: align by itself)"),
     NAVFUSE_CONFIG_KEY(alignment.initial_heading_std_deg, kAngleStdDeg,
                        "1 sigma of initial_heading_deg (deg)"),
+    NAVFUSE_CONFIG_KEY(alignment.initial_tilt_std_deg, kAngleStdDeg,
+                       "roll and pitch 1 sigma once levelled (deg; ~: from the accel bias prior at rest, "
+                       "2 in motion)"),
+    NAVFUSE_CONFIG_KEY(alignment.initial_velocity_std_mps, kSpeedMps,
+                       "velocity 1 sigma per axis once levelled (m/s; ~: 0.05 at rest, 5 in motion)"),
     NAVFUSE_CONFIG_KEY(alignment.course, kAny,
                        "heading from the course over ground (true | false; ~: land platform only)"),
     NAVFUSE_CONFIG_KEY(alignment.level_time_s, kShortSpanS, "stationary time averaged for levelling (s)"),

@@ -25,6 +25,7 @@ FusionSetup fusion_setup_from_config(const config::Config& config) {
   s.antenna_a_offset_m = in_device_output_frame(config, config.gnss.lever_arm_m);
   if (has_secondary_antenna(config)) {
     s.compass_baseline_m = in_device_output_frame(config, config.gnss.secondary_lever_arm_m) - *s.antenna_a_offset_m;
+    s.compass_baseline_std_m.setConstant(config.gnss.baseline_std_m);
   }
   return s;
 }

@@ -42,6 +42,8 @@ TEST(ConfigOptions, ConfigDefaultsAreTheFilterDefaults) {
   EXPECT_EQ(o.level_time_s, d.level_time_s);
   EXPECT_EQ(o.level_timeout_s, d.level_timeout_s);
   EXPECT_EQ(o.initial_heading_std_rad, d.initial_heading_std_rad);
+  EXPECT_EQ(o.initial_tilt_std_rad, d.initial_tilt_std_rad);
+  EXPECT_EQ(o.initial_velocity_std_mps, d.initial_velocity_std_mps);
   EXPECT_EQ(o.land_vehicle, d.land_vehicle);
   EXPECT_EQ(o.course_alignment, d.course_alignment);
   EXPECT_EQ(o.zero_velocity_updates, d.zero_velocity_updates);
@@ -54,7 +56,7 @@ TEST(ConfigOptions, KeysReachTheirOptionsInSiUnits) {
       " max_gap_s: 0.25}\n"
       "gnss: {estimate_lever_arm: true, initial_lever_arm_std_m: 0.5, timeout_s: 4, recovery_s: 6}\n"
       "alignment: {initial_heading_deg: 30, initial_heading_std_deg: 90, level_time_s: 3,"
-      " level_timeout_s: 20}\n"
+      " level_timeout_s: 20, initial_tilt_std_deg: 1.5, initial_velocity_std_mps: 0.3}\n"
       "nhc: {lateral_std_mps: 0.2, vertical_std_mps: 0.4, min_speed_mps: 2.5, interval_s: 0.2}\n"
       "zupt: {std_mps: 0.005, window_s: 0.4, max_rate_rad_s: 0.03, max_accel_std_mps2: 0.1,"
       " max_speed_mps: 0.2}\n"
@@ -75,6 +77,8 @@ TEST(ConfigOptions, KeysReachTheirOptionsInSiUnits) {
   EXPECT_DOUBLE_EQ(o.initial_heading_std_rad, kPi / 2.0);
   EXPECT_EQ(o.level_time_s, 3);
   EXPECT_EQ(o.level_timeout_s, 20);
+  EXPECT_DOUBLE_EQ(o.initial_tilt_std_rad.value_or(0.0), 1.5 * kPi / 180.0);
+  EXPECT_EQ(o.initial_velocity_std_mps.value_or(0.0), 0.3);
   EXPECT_EQ(o.nhc_lateral_std_mps, 0.2);
   EXPECT_EQ(o.nhc_vertical_std_mps, 0.4);
   EXPECT_EQ(o.nhc_min_speed_mps, 2.5);

@@ -350,5 +350,34 @@ TEST(Engine, InitialHeadingCommandAlignsAnUnalignedFilter) {
   }
 }
 
+// alignment.initial_tilt_std_deg / initial_velocity_std_mps replace the priors levelling derives
+// (at rest: tilt from the accelerometer bias prior over g, 0.01 / 9.8 rad = 0.06 deg; velocity
+// 0.05 m/s). Read in the first solution after levelling, before any update could move them
+// (zero-velocity updates off).
+TEST(Engine, ConfiguredLevellingPriorsReplaceTheDerivedOnes) {
+  const auto first_levelled = [](const FilterOptions& o) {
+    Engine e{o};
+    for (const auto& m : make_static_stream(3.0, false).items) {
+      e.process(m);
+      if (e.solution().mode == NavMode::kVerticalGyro) return e.solution();
+    }
+    ADD_FAILURE() << "never levelled";
+    return e.solution();
+  };
+  FilterOptions o;
+  o.zero_velocity_updates = false;
+  const NavSolution derived = first_levelled(o);
+  EXPECT_NEAR(derived.att_std_rpy_rad.x(), 0.01 / 9.80665, 0.2 * 0.01 / 9.80665);
+  EXPECT_NEAR(derived.vel_std_ned_mps.x(), 0.05, 0.005);
+
+  o.initial_tilt_std_rad = 3.0 * rot::kDegToRad;
+  o.initial_velocity_std_mps = 0.5;
+  const NavSolution configured = first_levelled(o);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_NEAR(configured.att_std_rpy_rad(i), 3.0 * rot::kDegToRad, 0.01 * rot::kDegToRad) << i;
+  }
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(configured.vel_std_ned_mps(i), 0.5, 0.005) << i;
+}
+
 }  // namespace
 }  // namespace navfuse::filter

@@ -96,6 +96,7 @@ TEST(FilterKeys, OutOfPhysicalRangeRefusedNamingTheKey) {
   } refused[] = {
       {"gnss: {timeout_s: 0}", "gnss.timeout_s: must be in (0, 600], got 0"},
       {"gnss: {recovery_s: 1e4}", "gnss.recovery_s: must be in (0, 600], got 1e4"},
+      {"gnss: {baseline_std_m: 0}", "gnss.baseline_std_m: must be in (0, 100], got 0"},
       {"gnss: {initial_lever_arm_std_m: -0.1}", "gnss.initial_lever_arm_std_m: must be in (0, 100], got -0.1"},
       {"gnss: {initial_time_offset_std_s: 0}", "gnss.initial_time_offset_std_s: must be in (0, 1], got 0"},
       {"gnss: {initial_time_offset_std_s: 2}", "gnss.initial_time_offset_std_s: must be in (0, 1], got 2"},
@@ -103,6 +104,8 @@ TEST(FilterKeys, OutOfPhysicalRangeRefusedNamingTheKey) {
       {"imu: {initial_gyro_scale_std_ppm: 0}", "imu.initial_gyro_scale_std_ppm: must be in (0, 100000], got 0"},
       {"imu: {initial_mounting_std_deg: 200}", "imu.initial_mounting_std_deg: must be in (0, 180], got 200"},
       {"alignment: {initial_heading_std_deg: 0}", "alignment.initial_heading_std_deg: must be in (0, 180], got 0"},
+      {"alignment: {initial_tilt_std_deg: -1}", "alignment.initial_tilt_std_deg: must be in (0, 180], got -1"},
+      {"alignment: {initial_velocity_std_mps: 0}", "alignment.initial_velocity_std_mps: must be in (0, 100], got 0"},
       {"nhc: {lateral_std_mps: 0}", "nhc.lateral_std_mps: must be in (0, 100], got 0"},
       {"nhc: {min_speed_mps: -1}", "nhc.min_speed_mps: must be in [0, 100], got -1"},
       {"zupt: {std_mps: .nan}", "zupt.std_mps: expected a finite number"},

@@ -55,6 +55,23 @@ TEST(VnGeometry, WritesTheConfigLeverArmAndBaselineThenReadsThemBack) {
   EXPECT_EQ(steps[static_cast<std::size_t>(read57)].verify(bytes_of("$VNRRG,57,+00.750,-00.500,+00.000*69\r\n")), "");
 }
 
+TEST(VnGeometry, BaselineUncertaintyIsTheConfigKey) {
+  config::Config c;
+  c.gnss.lever_arm_m = {0.75, -0.5, 0.0};
+  c.gnss.secondary_lever_arm_m = {1.75, -0.5, 0.0};
+  c.gnss.baseline_std_m = 0.05;
+  const auto steps = fusion_setup_steps(c);
+  const auto text = sentences_of(steps);
+  // Checksum: XOR of the characters between '$' and '*', computed by hand.
+  const auto write93 = std::find(text.begin(), text.end(), "$VNWRG,93,1,0,0,0.05,0.05,0.05*56\r\n");
+  ASSERT_NE(write93, text.end()) << ::testing::PrintToString(text);
+  // The read-back holds the device to the uncertainty too: the factory 0.0254 is a mismatch.
+  const auto read93 = std::find(text.begin(), text.end(), "$VNRRG,93*79\r\n");
+  ASSERT_NE(read93, text.end());
+  const auto& verify = steps[static_cast<std::size_t>(read93 - text.begin())].verify;
+  EXPECT_NE(verify(bytes_of("$VNRRG,93,+01.000,+00.000,+00.000,00.0254,00.0254,00.0254*60\r\n")), "");
+}
+
 TEST(VnGeometry, LeverArmsAreSentInTheBodyFrameNavfuseRotatesFrom) {
   // Sensor yawed +90 deg in the vehicle: sensor x = vehicle right, so C_vs = Rz(90) and a
   // vehicle-frame (1, 0.5, -1) is (0.5, -1, -1) on the sensor's axes.
