@@ -26,6 +26,15 @@ void Observation::keep_rows(unsigned mask) {
   r.conservativeResize(out, out);
 }
 
+double Ekf::predicted_spread(const Observation& obs) const {
+  double spread = 0.0;
+  for (int i = 0; i < obs.rows(); ++i) {
+    const auto h = obs.h.row(i).head(n);
+    spread += h.dot(p.topLeftCorner(n, n) * h.transpose());
+  }
+  return spread;
+}
+
 namespace {
 using GainMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, sx::kCount, Observation::kMaxRows>;
 }  // namespace

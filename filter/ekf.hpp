@@ -49,6 +49,9 @@ class Ekf {
 
   // Normalised innovation squared without updating (for gates and tests).
   double nis(const Observation& obs) const;
+  // tr(H P H^T): the innovation spread the state alone predicts (adaptation compares it with the
+  // residuals). Row by row, so nothing is allocated.
+  double predicted_spread(const Observation& obs) const;
   // Gate (chi-square threshold, <= 0: no gate) then Joseph update. On acceptance `dx` is the
   // error estimate to subtract from the nominal state; P is updated. On rejection nothing changes.
   UpdateResult update(const Observation& obs, double gate);

@@ -31,6 +31,19 @@ bool sustained_rejection(std::int64_t now, std::int64_t& reject_since, std::int6
          seconds_since(now, last_accepted) >= recovery_s;
 }
 
+// Both adaptations, then the gated update. R first (measurement_noise_adaptation.hpp): the process
+// noise then sees the innovations against the noise the update will use, so an optimistic
+// receiver is not mistaken for an overconfident filter. The pending covariance propagation is
+// flushed first: both judge the residuals against the P the update will use.
+FuseResult adapt_and_apply(FilterCore& c, const FilterOptions& o, NoiseScaleWindow& noise,
+                           InnovationWindow& innovations, Observation& obs, std::int64_t now) {
+  const double gate = c.gate_for(o, obs.rows());
+  c.flush_covariance(o);
+  obs.r *= update_noise_scale(noise, c.ekf, obs, o.adaptation, gate);
+  adapt_to_innovation(c, o, innovations, obs, now);
+  return c.apply(o, obs, gate);
+}
+
 }  // namespace
 
 FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
@@ -67,10 +80,7 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
       c.view(shift_s), m, antenna_of_receiver(c.x, o.gnss_secondary_lever_arm_m, m.receiver_id));
   const double std_scale = o.gnss_position_std_scale_for(m.fix);
   obs.r *= std_scale * std_scale;
-  c.flush_covariance(o);
-  obs.r *= update_noise_scale(c.adaptation.position_noise, c.ekf, obs, o.adaptation, c.gate_for(o, obs.rows()));
-  adapt_to_innovation(c, o, c.adaptation.position, obs, now);
-  const FuseResult r = c.apply(o, obs, c.gate_for(o, obs.rows()));
+  const FuseResult r = adapt_and_apply(c, o, c.adaptation.position_noise, c.adaptation.position, obs, now);
   if (r.used) {
     c.gnss.last_position_ns = now;
     c.gnss.position_reject_since_ns = INT64_MIN;
@@ -121,10 +131,7 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssVelocity& m,
   Observation obs = gnss_velocity_observation(
       c.view(shift_s), m, antenna_of_receiver(c.x, o.gnss_secondary_lever_arm_m, m.receiver_id));
   obs.r = cov;
-  c.flush_covariance(o);
-  obs.r *= update_noise_scale(c.adaptation.velocity_noise, c.ekf, obs, o.adaptation, c.gate_for(o, obs.rows()));
-  adapt_to_innovation(c, o, c.adaptation.velocity, obs, now);
-  const FuseResult r = c.apply(o, obs, c.gate_for(o, obs.rows()));
+  const FuseResult r = adapt_and_apply(c, o, c.adaptation.velocity_noise, c.adaptation.velocity, obs, now);
   if (r.used) {
     c.gnss.last_velocity_ns = now;
     c.gnss.velocity_reject_since_ns = INT64_MIN;

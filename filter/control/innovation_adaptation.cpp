@@ -52,13 +52,7 @@ std::optional<InnovationWindow::Medians> InnovationWindow::recent_medians(std::i
 }
 
 InnovationWindow::Sample innovation_sample(const Ekf& ekf, const Observation& obs, std::int64_t t_ns) {
-  // tr(H P H^T) = sum_i h_i . (P h_i^T), one row at a time.
-  const int n = ekf.n;
-  double spread = 0.0;
-  for (int i = 0; i < obs.rows(); ++i) {
-    const Eigen::VectorXd h = obs.h.row(i).head(n).transpose();
-    spread += h.dot(ekf.p.topLeftCorner(n, n) * h);
-  }
+  const double spread = ekf.predicted_spread(obs);
   InnovationWindow::Sample s;
   s.time_ns = t_ns;
   s.nis_per_dim = ekf.nis(obs) / obs.rows();

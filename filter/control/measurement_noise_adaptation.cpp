@@ -26,12 +26,7 @@ constexpr double kMinGatedFraction = 0.05;
 double update_noise_scale(NoiseScaleWindow& w, const Ekf& ekf, const Observation& obs, const AdaptationOptions& a,
                           double gate) {
   if (!a.enabled || obs.rows() == 0) return w.scale;
-  const int n = ekf.n;
-  double spread = 0.0;  // tr(H P H^T), one row at a time (no heap: FilterCore allocates nothing)
-  for (int i = 0; i < obs.rows(); ++i) {
-    const auto h = obs.h.row(i).head(n);
-    spread += h.dot(ekf.p.topLeftCorner(n, n) * h.transpose());
-  }
+  const double spread = ekf.predicted_spread(obs);
   const double nis = ekf.nis(obs);
   const double noise = obs.r.trace();
   if (!(noise > 0.0) || !std::isfinite(spread)) return w.scale;
