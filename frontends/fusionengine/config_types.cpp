@@ -39,36 +39,4 @@ std::string_view to_string(ConfigType t) {
   return "Reserved";
 }
 
-std::size_t config_value_size(std::uint16_t config_type) {
-  switch (static_cast<ConfigType>(config_type)) {
-    case ConfigType::kDeviceLeverArm:
-    case ConfigType::kGnssLeverArm:
-    case ConfigType::kOutputLeverArm:
-    case ConfigType::kGnssAuxLeverArm:
-      return Point3f::kSize;
-    case ConfigType::kDeviceCoarseOrientation: return CoarseOrientation::kSize;
-    case ConfigType::kVehicleDetails: return VehicleDetails::kSize;
-    case ConfigType::kWheelConfig: return WheelConfig::kSize;
-    case ConfigType::kHardwareTickConfig: return HardwareTickConfig::kSize;
-    case ConfigType::kEnabledGnssSystems:
-    case ConfigType::kEnabledGnssFrequencyBands:
-    case ConfigType::kLeapSecond:
-    case ConfigType::kGpsWeekRollover:
-    case ConfigType::kUart1BaudRate:
-    case ConfigType::kUart2BaudRate:
-      return 4;
-    case ConfigType::kIonosphereConfig:
-    case ConfigType::kTroposphereConfig:
-      return DelayModelConfig::kSize;
-    case ConfigType::kUart1OutputDiagnostics:
-    case ConfigType::kUart2OutputDiagnostics:
-    case ConfigType::kEnableWatchdogTimer:
-    case ConfigType::kProfilingMask:
-      return 1;
-    case ConfigType::kUserDeviceId: return 32;  // char[32] (L996)
-    case ConfigType::kLBandParameters: return 28;  // LBandConfig (L1293-1305)
-    default: return 0;
-  }
-}
-
 }  // namespace navfuse::frontends::fusionengine

@@ -190,6 +190,54 @@ std::optional<C> parse_config(std::span<const std::uint8_t> bytes) {
 }
 
 // Value size the spec defines for a config type, or 0 when unknown / variable.
-std::size_t config_value_size(std::uint16_t config_type);
+constexpr std::size_t config_value_size(std::uint16_t config_type) {
+  switch (static_cast<ConfigType>(config_type)) {
+    case ConfigType::kDeviceLeverArm:
+    case ConfigType::kGnssLeverArm:
+    case ConfigType::kOutputLeverArm:
+    case ConfigType::kGnssAuxLeverArm:
+      return Point3f::kSize;
+    case ConfigType::kDeviceCoarseOrientation: return CoarseOrientation::kSize;
+    case ConfigType::kVehicleDetails: return VehicleDetails::kSize;
+    case ConfigType::kWheelConfig: return WheelConfig::kSize;
+    case ConfigType::kHardwareTickConfig: return HardwareTickConfig::kSize;
+    case ConfigType::kEnabledGnssSystems:
+    case ConfigType::kEnabledGnssFrequencyBands:
+    case ConfigType::kLeapSecond:
+    case ConfigType::kGpsWeekRollover:
+    case ConfigType::kUart1BaudRate:
+    case ConfigType::kUart2BaudRate:
+      return 4;
+    case ConfigType::kIonosphereConfig:
+    case ConfigType::kTroposphereConfig:
+      return DelayModelConfig::kSize;
+    case ConfigType::kUart1OutputDiagnostics:
+    case ConfigType::kUart2OutputDiagnostics:
+    case ConfigType::kEnableWatchdogTimer:
+    case ConfigType::kProfilingMask:
+      return 1;
+    case ConfigType::kUserDeviceId: return 32;  // char[32] (L996)
+    case ConfigType::kLBandParameters: return 28;  // LBandConfig (L1293-1305)
+    default: return 0;
+  }
+}
+
+// InterfaceConfigSubmessage (L1211-1254): an InterfaceID, the InterfaceConfigType u8 and 3
+// reserved bytes, then a value whose largest form is REMOTE_ADDRESS, char[64] (L1228).
+inline constexpr std::size_t kInterfaceConfigHeaderSize = InterfaceId::kSize + 4;
+inline constexpr std::size_t kMaxInterfaceConfigValueSize = 64;
+
+// The largest config value the spec defines (the Value of SetConfig / ConfigResponse, whose u32
+// Value Length could claim 4 GiB): every type up to the last defined one, 0x400 (types above
+// are reserved, L1003), and the variable-length InterfaceConfig.
+constexpr std::size_t max_config_value_size() {
+  std::size_t n = kInterfaceConfigHeaderSize + kMaxInterfaceConfigValueSize;
+  for (std::uint32_t t = 0; t <= to_u16(ConfigType::kLBandParameters); ++t) {
+    const std::size_t s = config_value_size(static_cast<std::uint16_t>(t));
+    if (s > n) n = s;
+  }
+  return n;
+}
+inline constexpr std::size_t kMaxConfigValueSize = max_config_value_size();
 
 }  // namespace navfuse::frontends::fusionengine

@@ -4,9 +4,9 @@
 //   1. memchr for sync byte 0 (0x2E), then check sync byte 1 (0x31);
 //   2. read the 24-byte header; reserved bytes 2-3 must be 0 (every spec example, and the public
 //      client's framer, drop a candidate otherwise) and payload_size must not exceed what the
-//      type can hold (max_payload_size(), message_catalog.hpp): a fixed-layout type's size plus
-//      kMaxVersionGrowth, kMaxUnknownPayloadSize for a type not in the catalogue, kMaxPayloadSize
-//      (the spec gives no maximum) for a variable-length one; all before any CRC;
+//      type can hold (max_payload_size(), message_catalog.hpp): the largest payload the type's
+//      layout can express plus kMaxVersionGrowth, kMaxUnknownPayloadSize for a type not in the
+//      catalogue; all before any CRC, so a corrupted size costs no wait and no CRC beyond that;
 //   3. CRC-32 over [8, 24 + payload_size) must equal the header CRC;
 //   4. on any failure restart the sync search one byte after the candidate's first byte.
 // Payload sizes need not be multiples of 4 (spec L153 vs example L891-895, digest §13 A1).

@@ -34,16 +34,18 @@ using AllMessages = std::tuple<
 
 inline constexpr std::size_t kCatalogSize = std::tuple_size_v<AllMessages>;
 
-// Payload sizes a frame header may claim before the framer treats it as corrupt. A fixed-layout
-// message may grow in newer versions ("extending the message length", spec L189), but not by
-// more than kMaxVersionGrowth bytes; a variable-length type of the catalogue may use the full
-// kMaxPayloadSize; a type the catalogue does not know, at most kMaxUnknownPayloadSize. Without
-// these bounds, one corrupted size byte in an IMU frame, or a corrupted header naming an unknown
-// type, makes the framer wait for, and CRC, up to 16 MiB before it can resynchronise (issue 15.11).
-// An unknown type is never decoded, only skipped, so a genuine one beyond the bound costs nothing
-// but its bytes being counted as skipped instead of as an unknown frame.
+// Payload sizes a frame header may claim before the framer treats it as corrupt: for a type of
+// the catalogue, the largest payload its layout can express (payload_bound(), payload_bound.hpp:
+// the fixed part plus what its count and length fields can express, or its documented
+// kMaxVariableSize) plus kMaxVersionGrowth, since a newer version may extend any message ("extending
+// the message length", spec L189); for a type the catalogue does not know, kMaxUnknownPayloadSize.
+// Without these bounds one corrupted size byte, in an IMU frame or a GNSSSignals frame, or a
+// corrupted header naming an unknown type, makes the framer wait for, and CRC, up to 16 MiB
+// before it can resynchronise (issue 15.11). An unknown type is never decoded, only skipped, so a
+// genuine one beyond the bound costs nothing but its bytes being counted as skipped instead of as
+// an unknown frame (kMaxOpaqueDataSize, wire.hpp, says the same of the opaque known ones).
 inline constexpr std::uint32_t kMaxVersionGrowth = 4096;
-inline constexpr std::uint32_t kMaxUnknownPayloadSize = 64 * 1024;
+inline constexpr std::uint32_t kMaxUnknownPayloadSize = kMaxOpaqueDataSize;
 std::uint32_t max_payload_size(std::uint16_t message_type);
 
 // The spec's name of a message type ("Pose", "IMUOutput", ...), or nullopt for an id the spec

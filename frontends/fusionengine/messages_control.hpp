@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "frontends/fusionengine/config_types.hpp"
 #include "frontends/fusionengine/wire.hpp"
 
 namespace navfuse::frontends::fusionengine {
@@ -108,6 +109,9 @@ struct FaultControlMessage {
   static constexpr std::uint8_t kVersion = 0;
   static constexpr std::string_view kName = "FaultControl";
   static constexpr std::size_t kSize = 20;
+  // The u32 Value Length could claim 4 GiB; every fault type's value is None, a u8 or a bool
+  // (L859-870), so one byte.
+  static constexpr std::size_t kMaxVariableSize = 1;
   std::uint8_t fault_type = 0;
   std::uint32_t value_length = 0;
   std::vector<std::uint8_t> value;
@@ -129,6 +133,7 @@ struct SetConfigMessage {
   static constexpr std::uint8_t kVersion = 0;
   static constexpr std::string_view kName = "SetConfig";
   static constexpr std::size_t kSize = 8;
+  static constexpr std::size_t kMaxVariableSize = kMaxConfigValueSize;  // u32 Value Length
   std::uint16_t config_type = 0;
   std::uint8_t flags = 0;
   std::uint32_t value_length = 0;
@@ -185,6 +190,7 @@ struct ConfigResponseMessage {
   static constexpr std::uint8_t kVersion = 0;
   static constexpr std::string_view kName = "ConfigResponse";
   static constexpr std::size_t kSize = 12;
+  static constexpr std::size_t kMaxVariableSize = kMaxConfigValueSize;  // u32 Value Length
   std::uint8_t source = 0;
   std::uint8_t active_differs_from_saved = 0;
   std::uint16_t config_type = 0;
@@ -226,6 +232,7 @@ struct ImportDataMessage {
   static constexpr std::uint8_t kVersion = 0;
   static constexpr std::string_view kName = "ImportData";
   static constexpr std::size_t kSize = 16;
+  static constexpr std::size_t kMaxVariableSize = kMaxOpaqueDataSize;  // u32 Data Length
   std::uint8_t data_type = 0;
   std::uint8_t source = 0;
   DataVersion version;
@@ -266,6 +273,7 @@ struct PlatformStorageDataMessage {
   static constexpr std::uint8_t kVersion = 3;
   static constexpr std::string_view kName = "PlatformStorageData";
   static constexpr std::size_t kSize = 12;
+  static constexpr std::size_t kMaxVariableSize = kMaxOpaqueDataSize;  // u32 Data Length
   std::uint8_t data_type = 0;
   std::uint8_t response = 0;
   std::uint8_t source = 0;

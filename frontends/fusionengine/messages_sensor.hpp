@@ -307,6 +307,7 @@ struct InputDataWrapperMessage {
   static constexpr std::uint8_t kVersion = 0;
   static constexpr std::string_view kName = "InputDataWrapper";
   static constexpr std::size_t kSize = 8;
+  static constexpr std::size_t kMaxVariableSize = kMaxOpaqueDataSize;  // "the rest of the payload"
   std::uint32_t system_time_cs_low = 0;
   std::uint8_t system_time_cs_high = 0;
   std::uint16_t data_type = 0;

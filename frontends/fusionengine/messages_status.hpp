@@ -249,6 +249,7 @@ struct Sta5635IqDataMessage {
   static constexpr std::uint8_t kVersion = 0;
   static constexpr std::string_view kName = "STA5635IQData";
   static constexpr std::size_t kSize = 4;
+  static constexpr std::size_t kMaxVariableSize = kMaxOpaqueDataSize;  // "the rest of the payload"
   std::vector<std::uint8_t> samples;
   template <class V>
   void visit(V& v) {

@@ -34,6 +34,16 @@ inline constexpr std::uint8_t kProtocolVersion = 2;
 // The spec gives no maximum payload (digest §1.5); the public client uses 1 << 24. Longer
 // lengths are treated as corrupt headers so that one flipped bit cannot stall the stream.
 inline constexpr std::uint32_t kMaxPayloadSize = 1u << 24;
+// Bytes navfuse never interprets, whose size neither the spec nor a count field bounds below
+// kMaxPayloadSize: the data of ImportData / PlatformStorageData (u32 Data Length, L1381-1398,
+// L1625-1651), the bytes InputDataWrapper wraps (L2445-2463) and STA5635 IQ samples
+// (L2870-2886), all "the rest" or "Variable" in the spec. They are only skipped, answered or
+// dumped as hex, so a genuine longer one costs its bytes being counted as skipped (as for a type
+// the catalogue does not know, message_catalog.hpp), while a corrupted size claiming 16 MiB
+// would cost a wait for, and a CRC over, 16 MiB. 64 KiB holds one whole frame of the native
+// formats a device wraps (RTCM 3 at most 1029 bytes; upstream drivers unwrap one Septentrio SBF
+// block per wrapper, whose length is a u16) and is 256x the largest config value.
+inline constexpr std::uint32_t kMaxOpaqueDataSize = 64 * 1024;
 // Source Identifier: "Typically set to 0 for measurement input messages, or 0xFFFFFFFF (invalid)
 // for non-measurement messages" (L193). Decoders never validate it (digest §13 A14).
 inline constexpr std::uint32_t kSourceIdMeasurementInput = 0;

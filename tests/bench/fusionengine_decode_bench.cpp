@@ -1,6 +1,9 @@
 // Framing + decoding of a FusionEngine stream of IMUOutput (100 Hz) and Pose (10 Hz) messages
 // with 1 % of its bytes corrupted at random (fixed seed), through the StreamDecoder into a
 // sink that only counts; the corrupted stream is repeated to 200 MB first (corrupted_stream.hpp). Reports bytes_per_second; the issue's goal is >= 1 GB/s on one core.
+// The "WithSignals" variant adds a GNSSSignals message (30 satellites, 60 signals) at 1 Hz, as a
+// receiver emits: a corrupted size byte in a variable-length header is what the per-type bounds
+// (payload_bound.hpp) cap, where the frame limit let it claim up to 16 MiB (issue 15.11).
 #include <benchmark/benchmark.h>
 
 #include <random>
@@ -20,7 +23,19 @@ class CountingSink final : public frontends::DecodeSink {
   std::uint64_t measurements = 0;
 };
 
-std::vector<std::uint8_t> make_stream(double corrupt_fraction) {
+frontends::fusionengine::GnssSignalsMessage signals_message(std::int64_t t) {
+  frontends::fusionengine::GnssSignalsMessage m;
+  m.p1_time = frontends::fusionengine::Timestamp::from_ns(t);
+  m.gps_time = m.p1_time;
+  for (std::uint8_t sv = 1; sv <= 30; ++sv) {
+    m.satellites.push_back({1, sv, 1, 4500, 18000});
+    m.signals.push_back({1, sv, 180, 0x0F});
+    m.signals.push_back({2, sv, 160, 0x0F});
+  }
+  return m;
+}
+
+std::vector<std::uint8_t> make_stream(double corrupt_fraction, bool with_signals = false) {
   constexpr std::int64_t kT0 = 1'400'000'000'000'000'000;
   constexpr int kImuSamples = 40'000;  // ~5 MB
   frontends::fusionengine::FusionEngineWriter writer;
@@ -37,6 +52,7 @@ std::vector<std::uint8_t> make_stream(double corrupt_fraction) {
     frontends::fusionengine::ImuOutputMessage m;
     frontends::fusionengine::imu_output_from(imu, m);
     writer.append(m, out);
+    if (with_signals && i % 100 == 0) writer.append(signals_message(t), out);
     if (i % 10 == 0) {
       NavSolution s;
       s.header = {t, TimeSource::kGps, 0,
@@ -62,8 +78,8 @@ std::vector<std::uint8_t> make_stream(double corrupt_fraction) {
   return out;
 }
 
-void BM_FeDecodeCorrupted(benchmark::State& state) {
-  const std::vector<std::uint8_t> stream = make_stream(0.01);
+void BM_FeDecodeCorrupted(benchmark::State& state, bool with_signals) {
+  const std::vector<std::uint8_t> stream = make_stream(0.01, with_signals);
   std::uint64_t frames = 0, bad = 0, measurements = 0;
   for (auto _ : state) {
     frontends::fusionengine::FusionEngineDecoder decoder;
@@ -80,7 +96,8 @@ void BM_FeDecodeCorrupted(benchmark::State& state) {
   state.counters["bad_frames"] = static_cast<double>(bad);
   state.counters["measurements"] = static_cast<double>(measurements);
 }
-BENCHMARK(BM_FeDecodeCorrupted)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_FeDecodeCorrupted, ImuPose, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_FeDecodeCorrupted, WithSignals, true)->Unit(benchmark::kMillisecond);
 
 void BM_FeDecodeClean(benchmark::State& state) {
   const std::vector<std::uint8_t> stream = make_stream(0.0);
