@@ -69,6 +69,7 @@ struct StationaryState {
   Eigen::Vector3d sum_rate = Eigen::Vector3d::Zero();
   Eigen::Vector3d sum_force = Eigen::Vector3d::Zero();
   double sum_force_sq = 0.0;
+  double sum_rate_sq = 0.0;  // of |rate|^2, for the scatter that vibration adds to the window mean
   bool previous_quiet = false;
   bool stationary = false;
   Eigen::Vector3d reference_force = Eigen::Vector3d::Zero();  // mean specific force when it began

@@ -1,5 +1,6 @@
 #include "filter/control/gnss_control.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -31,6 +32,17 @@ bool sustained_rejection(std::int64_t now, std::int64_t& reject_since, std::int6
          seconds_since(now, last_accepted) >= recovery_s;
 }
 
+// The speed between two fixes is the speed evidence of stationary detection and levelling
+// (stationary_control.hpp) when it is precise enough to tell rest from motion: RTK fixes (2 cm
+// at 4 Hz: ~0.1 m/s), not float or single-point ones, whose scatter would read as motion and
+// keep a quiet IMU from its zero-velocity updates.
+void record_speed_from_fixes(FilterCore& c, const FilterOptions& o, const AlignmentVelocity& v, std::int64_t now) {
+  const double std_mps = std::sqrt(std::max(0.0, 0.5 * (v.cov_m2ps2(0, 0) + v.cov_m2ps2(1, 1))));
+  if (!(std_mps < 0.5 * o.stationary_max_speed_mps)) return;
+  c.gnss.last_speed_mps = v.vel_ned_mps.head<2>().norm();
+  c.gnss.last_speed_ns = now;
+}
+
 // Both adaptations, then the gated update. R first (measurement_noise_adaptation.hpp): the process
 // noise then sees the innovations against the noise the update will use, so an optimistic
 // receiver is not mistaken for an overconfident filter. The pending covariance propagation is
@@ -60,6 +72,12 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
   if (m.receiver_id == 0) {
     previous = std::exchange(c.gnss.previous_primary_fix, GnssControlState::PairedFix{m, c.velocity_match.force_integral_mps});
   }
+  // A receiver that reports no velocity: the mean velocity between its consecutive fixes.
+  std::optional<AlignmentVelocity> from_fixes;
+  if (previous && seconds_since(now, c.gnss.last_receiver_velocity_ns) > kReceiverVelocityAge_s) {
+    from_fixes = velocity_from_fixes(o, previous->fix, previous->force_integral_mps, m, c.velocity_match.force_integral_mps);
+    if (from_fixes) record_speed_from_fixes(c, o, *from_fixes, now);
+  }
   if (!c.mode.levelled) return FuseResult::reject(RejectReason::kNotAligned);
   if (!c.mode.heading_known || !c.mode.position_known) {
     // The first fix places the filter. Without a heading the lever arm cannot be resolved and
@@ -67,12 +85,7 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
     // instead of filtering.
     place_at_fix(c, o, m);
     c.gnss.last_position_ns = now;
-    if (!c.mode.heading_known && previous && seconds_since(now, c.gnss.last_receiver_velocity_ns) > kReceiverVelocityAge_s) {
-      if (auto v = velocity_from_fixes(o, previous->fix, previous->force_integral_mps, m,
-                                       c.velocity_match.force_integral_mps)) {
-        align_heading_from_velocity(c, o, *v, now);
-      }
-    }
+    if (!c.mode.heading_known && from_fixes) align_heading_from_velocity(c, o, *from_fixes, now);
     return FuseResult::ok();
   }
 

@@ -40,6 +40,7 @@ void update_stationary(FilterCore& c, const FilterOptions& o, const ImuIncrement
   s.sum_rate += raw.dtheta_rad;
   s.sum_force += raw.dvel_mps;
   s.sum_force_sq += (raw.dvel_mps / raw.dt_s).squaredNorm();
+  s.sum_rate_sq += (raw.dtheta_rad / raw.dt_s).squaredNorm();
   if (s.window_time_s < o.stationary_window_s) return;
 
   const double t = s.window_time_s;
@@ -48,16 +49,26 @@ void update_stationary(FilterCore& c, const FilterOptions& o, const ImuIncrement
   const double scatter = std::sqrt(std::max(0.0, s.sum_force_sq / s.window_count - mean_force.squaredNorm()));
   const Eigen::Vector3d mean_rate = mean_raw_rate - c.x.gyro_bias_rps;
   const bool force_steady = !s.stationary || (mean_force - s.reference_force).norm() < 2.0 * o.stationary_accel_std_mps2;
-  const bool quiet = mean_rate.norm() < o.stationary_gyro_rps && scatter < o.stationary_accel_std_mps2 && force_steady;
+  // An idling engine shakes a standing car far above the quiet scatter (car_vibration: 0.1 m/s^2
+  // RMS at idle, twice the default threshold), so a fresh speed measurement at rest stands in for
+  // it, as it does for levelling (alignment.cpp). Without it a car that stands for minutes before
+  // it drives gets no zero-velocity or zero-rate update: its tilt drifts on the gyro biases
+  // (2.8 deg after 200 s on parking_drive's IMU) and the heading found when it moves off is
+  // 20 deg wrong.
+  const bool force_quiet = scatter < o.stationary_accel_std_mps2 || speed_shows_rest(c, o);
+  const bool quiet = mean_rate.norm() < o.stationary_gyro_rps && force_quiet && force_steady;
   const bool was_stationary = s.stationary;
   s.stationary = quiet && s.previous_quiet && speed_evidence_allows_rest(c, o);
   if (s.stationary && !was_stationary) s.reference_force = mean_force;
   s.previous_quiet = quiet;
+  const int samples = s.window_count;
   s.window_time_s = 0.0;
   s.window_count = 0;
   s.sum_rate.setZero();
   s.sum_force.setZero();
   s.sum_force_sq = 0.0;
+  const double rate_sq = s.sum_rate_sq;
+  s.sum_rate_sq = 0.0;
   if (!s.stationary || !o.zero_velocity_updates) return;
 
   const FuseResult zupt = c.apply(o, zero_velocity_observation(c.view(0.0), o.zupt_std_mps), o.chi2_gate[2]);
@@ -73,8 +84,11 @@ void update_stationary(FilterCore& c, const FilterOptions& o, const ImuIncrement
     ++c.mode.zupts;
   }
   // The window mean of white rate noise has std ARW / sqrt(T); the bias random walk within the
-  // window is negligible next to it.
-  double std_rps = o.imu.gyro_arw_rad_rts / std::sqrt(t);
+  // window is negligible next to it. Vibration adds rate noise far above the data sheet's: the
+  // window's own scatter over sqrt(n) (per axis: the |rate|^2 scatter over 3) is then the standard
+  // error of its mean, if larger.
+  const double rate_scatter_sq = std::max(0.0, rate_sq / samples - mean_raw_rate.squaredNorm()) / 3.0;
+  double std_rps = std::max(o.imu.gyro_arw_rad_rts / std::sqrt(t), std::sqrt(rate_scatter_sq / samples));
   if (!c.mode.heading_known) {
     // Before the heading is known the horizontal earth rate's direction in the body is unknown
     // (its magnitude, w_ie cos(lat), is not): count it as noise, so the gyro biases still settle
