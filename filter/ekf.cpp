@@ -87,13 +87,22 @@ void joseph_update(Covariance& p, const Observation& obs, double gate, UpdateRes
   //   X = (I - K H) P = P - K (H P)
   //   X (I - K H)^T = X - (X H^T) K^T
   //   P' = X (I - K H)^T + K R K^T
-  Block x = pn;
+  // X is formed in P's own block (P is still held in pn), and (X + X^T) / 2 is evaluated once per
+  // pair of mirrored entries (IEEE addition commutes: both get the same bits).
+  auto x = p.template topLeftCorner<N, N>();
   x.noalias() -= k.lazyProduct(pht.transpose());
   const Gain xht = x.lazyProduct(h.transpose());
   x.noalias() -= xht.lazyProduct(k.transpose());
   const Gain kr = k.lazyProduct(r);
   x.noalias() += kr.lazyProduct(k.transpose());
-  p.template topLeftCorner<N, N>() = 0.5 * (x + x.transpose());
+  for (int col = 0; col < N; ++col) {
+    for (int row = 0; row < col; ++row) {
+      const double sym = 0.5 * (x(row, col) + x(col, row));
+      x(row, col) = sym;
+      x(col, row) = sym;
+    }
+    x(col, col) = 0.5 * (x(col, col) + x(col, col));  // as the full form rounds it (overflow)
+  }
   result.accepted = true;
 }
 
@@ -136,6 +145,11 @@ void Ekf::guard(const StateVector& floor) {
 }
 
 // NaN or inf anywhere in P reaches the diagonal within one propagation step.
-bool Ekf::finite() const { return p.diagonal().head(n).allFinite(); }
+// Checked at every IMU sample: over the fixed-size diagonal, which Eigen vectorises.
+bool Ekf::finite() const {
+  bool all = true;
+  with_active_dimension(n, [&](auto dim) { all = p.diagonal().template head<decltype(dim)::value>().allFinite(); });
+  return all;
+}
 
 }  // namespace navfuse::filter

@@ -102,9 +102,14 @@ void Engine::run_increment(const ImuRecord& record) {
 }
 
 void Engine::fuse_due(std::int64_t horizon_ns) {
-  for (Entry& e : entries_) {
-    if (e.time_ns >= horizon_ns) break;
-    if (!e.applied) fuse_entry(e);
+  // Entries stamped before the previous horizon are all applied already: by the fuse_due() that
+  // reached that horizon, on arrival (process_aiding), or dropped; replay_from() clears the flags
+  // only from the horizon it sets. So the scan starts there instead of at the ~1 s of fused
+  // entries kept for re-propagation (a walk over ~60 entries per IMU sample).
+  auto e = std::lower_bound(entries_.begin(), entries_.end(), previous_horizon_ns_,
+                            [](const Entry& entry, std::int64_t t) { return entry.time_ns < t; });
+  for (; e != entries_.end() && e->time_ns < horizon_ns; ++e) {
+    if (!e->applied) fuse_entry(*e);
   }
 }
 

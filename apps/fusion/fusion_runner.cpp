@@ -80,27 +80,29 @@ void FusionRunner::after_imu(const ImuSample& s, std::int64_t arrival_ns) {
   if (engine_.imu_epoch() == last_engine_epoch_) return;  // the filter did not advance (rejected)
   last_engine_epoch_ = engine_.imu_epoch();
 
+  OutputEpoch* slot = solutions_ == Solutions::kDeferred ? observer_.epoch_slot() : nullptr;
+  OutputEpoch& epoch = slot != nullptr ? *slot : epoch_;
   // The state time is the solution's time (filter/solution.cpp), known without filling it.
-  epoch_.pose_due = rate_.due(engine_.core().x.time_ns);
-  epoch_.gnss_fused_total = engine_.used(MeasurementKind::kGnssPosition);
-  epoch_.gnss_updated = false;
-  if (epoch_.pose_due) {
+  epoch.pose_due = rate_.due(engine_.core().x.time_ns);
+  epoch.gnss_fused_total = engine_.used(MeasurementKind::kGnssPosition);
+  epoch.gnss_updated = false;
+  if (epoch.pose_due) {
     ++poses_;
     // GNSSInfo-style outputs go out at the first pose after a fix was fused.
-    epoch_.gnss_updated = epoch_.gnss_fused_total != gnss_at_last_pose_;
-    gnss_at_last_pose_ = epoch_.gnss_fused_total;
+    epoch.gnss_updated = epoch.gnss_fused_total != gnss_at_last_pose_;
+    gnss_at_last_pose_ = epoch.gnss_fused_total;
   }
-  epoch_.num_sats = num_sats_;
-  epoch_.arrival_ns = arrival_ns;
-  epoch_.time_gap_restarts = engine_.time_gap_restarts();
-  epoch_.divergence_restarts = engine_.divergence_restarts();
-  epoch_.solution_deferred = solutions_ == Solutions::kDeferred;
-  if (epoch_.solution_deferred) {
-    engine_.capture_solution(epoch_.solution_inputs);
-  } else if (solutions_ == Solutions::kEvery || (solutions_ == Solutions::kPoses && epoch_.pose_due)) {
-    epoch_.solution = engine_.solution();
+  epoch.num_sats = num_sats_;
+  epoch.arrival_ns = arrival_ns;
+  epoch.time_gap_restarts = engine_.time_gap_restarts();
+  epoch.divergence_restarts = engine_.divergence_restarts();
+  epoch.solution_deferred = solutions_ == Solutions::kDeferred;
+  if (epoch.solution_deferred) {
+    engine_.capture_solution(epoch.solution_inputs);
+  } else if (solutions_ == Solutions::kEvery || (solutions_ == Solutions::kPoses && epoch.pose_due)) {
+    epoch.solution = engine_.solution();
   }
-  observer_.on_epoch(epoch_, engine_);
+  observer_.on_epoch(epoch, engine_);
 }
 
 void FusionRunner::fill_summary(Summary& summary, double wall_s) const {

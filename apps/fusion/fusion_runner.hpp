@@ -40,6 +40,11 @@ class FusionObserver {
   virtual void on_fused(const Measurement&) {}
   // The filter advanced by one IMU sample. epoch.solution is filled as Options::solutions says.
   virtual void on_epoch(const OutputEpoch& /*epoch*/, const filter::Engine& /*engine*/) {}
+  // Solutions::kDeferred: where the runner assembles the next epoch it hands to on_epoch(). An
+  // observer that queues epochs returns its queue's next slot, so that the ~1 kB of solution
+  // inputs is captured in place rather than copied once more per IMU sample. nullptr: the
+  // runner's own epoch. Only the fields the runner sets for kDeferred are written.
+  virtual OutputEpoch* epoch_slot() { return nullptr; }
   // A log is used up (replay, bench): still inside the timed part of the run, so work an
   // observer handed to another thread is finished here and counted in the rate.
   virtual void on_finished() {}

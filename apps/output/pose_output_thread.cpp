@@ -8,10 +8,18 @@ namespace {
 // replay speed); 8 batches in flight bound memory at ~1 MB and let the writer absorb bursts.
 constexpr std::size_t kBatchEpochs = 256;
 constexpr std::size_t kBatches = 8;
+// A slot is written again kSlots epochs after its last use, i.e. kBatches full batches later. By
+// then the writer has given that batch back: the filling batch and the ones the writer has not
+// given back (handed over, or being written) share the pipe's kBatches buffers, so a batch
+// kBatches back no longer holds one. Only close() hands over a batch that is not full, and it
+// is the last.
+constexpr std::size_t kSlots = kBatchEpochs * kBatches;
 }  // namespace
 
 PoseOutputThread::PoseOutputThread(PoseOutputs& outputs)
-    : outputs_(outputs), pipe_(kBatchEpochs, kBatches), thread_([this] { run(); }) {}
+    : outputs_(outputs), pipe_(kBatchEpochs, kBatches), thread_([this] { run(); }) {
+  slots_.reserve(kSlots);
+}
 
 PoseOutputThread::~PoseOutputThread() {
   try {
@@ -21,19 +29,27 @@ PoseOutputThread::~PoseOutputThread() {
   }
 }
 
+OutputEpoch& PoseOutputThread::next_slot() {
+  if (next_slot_ == slots_.size()) slots_.emplace_back();  // first lap: within the reservation
+  return slots_[next_slot_];
+}
+
 void PoseOutputThread::post(const OutputEpoch& epoch) {
-  pipe_.filling().push_back(epoch);
+  OutputEpoch& slot = next_slot();
+  if (&epoch != &slot) slot = epoch;
+  next_slot_ = (next_slot_ + 1) % kSlots;
+  pipe_.filling().push_back(&slot);
   pipe_.hand_over_if_full();  // rethrows the writer's error
 }
 
 void PoseOutputThread::run() {
   pthread_setname_np(pthread_self(), "navfuse-output");  // tells the threads apart in top/perf
-  BatchPipe<OutputEpoch>::Batch batch;
+  BatchPipe<OutputEpoch*>::Batch batch;
   try {
     while (pipe_.take(batch)) {
-      for (OutputEpoch& e : batch) {
-        e.fill_deferred_solution();  // the filter thread only captured it
-        outputs_.write(e);
+      for (OutputEpoch* e : batch) {
+        e->fill_deferred_solution();  // the filter thread only captured it
+        outputs_.write(*e);
       }
     }
   } catch (...) {

@@ -62,7 +62,6 @@ class ReplayObserver final : public FusionObserver {
       accuracy_->use_outage_plan(*plan_, runner_->first_imu()->time_ns);
       plan_.reset();
     }
-    if (writer_) writer_->post(epoch);
     if (accuracy_ && epoch.pose_due) {
       if (epoch.solution_deferred) {
         filter::fill_nav_solution(epoch.solution_inputs, truth_scratch_);
@@ -75,7 +74,10 @@ class ReplayObserver final : public FusionObserver {
       const NavMode mode = epoch.solution_deferred ? epoch.solution_inputs.mode : epoch.solution.mode;
       if (mode == NavMode::kNavigation || mode == NavMode::kDeadReckoning) ++navigating_poses_;
     }
+    // Last: once posted, the epoch (the writer's own slot) belongs to the writer's thread.
+    if (writer_) writer_->post(epoch);
   }
+  OutputEpoch* epoch_slot() override { return writer_ ? &writer_->next_slot() : nullptr; }
   // Poses written in a navigating mode (counted only when there are writers: else the runner
   // fills no solution).
   std::uint64_t navigating_poses() const { return navigating_poses_; }

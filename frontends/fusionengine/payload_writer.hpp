@@ -3,9 +3,11 @@
 #pragma once
 
 #include <array>
+#include <concepts>
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/bytes/byte_writer.hpp"
@@ -13,9 +15,16 @@
 
 namespace navfuse::frontends::fusionengine {
 
-class PayloadWriter {
+// `Sink`: bytes::LeWriter (appends to a vector) or bytes::LeSpanWriter (fills bytes that already
+// exist, for a frame whose payload size is known beforehand: fusionengine/writer.hpp).
+template <class Sink>
+class BasicPayloadWriter {
  public:
-  explicit PayloadWriter(std::vector<std::uint8_t>& out) : w_(out) {}
+  template <class Out>
+    requires std::constructible_from<Sink, Out&&>
+  explicit BasicPayloadWriter(Out&& out) : w_(std::forward<Out>(out)) {}
+
+  const Sink& sink() const { return w_; }
 
   template <typename T>
   void field(std::string_view, const T& value) {
@@ -54,7 +63,10 @@ class PayloadWriter {
   }
 
  private:
-  bytes::LeWriter w_;
+  Sink w_;
 };
+
+using PayloadWriter = BasicPayloadWriter<bytes::LeWriter>;
+using PayloadSpanWriter = BasicPayloadWriter<bytes::LeSpanWriter>;
 
 }  // namespace navfuse::frontends::fusionengine

@@ -20,12 +20,12 @@ std::uint32_t default_source_id(std::uint16_t message_type) {
 }
 
 std::size_t begin_frame(std::vector<std::uint8_t>& out, std::uint16_t message_type, std::uint8_t message_version,
-                        std::uint32_t sequence, std::uint32_t source_id) {
+                        std::uint32_t sequence, std::uint32_t source_id, std::size_t payload_bytes) {
   // The header grows the buffer once (reserved, CRC and payload size stay zero until
   // end_frame()) and its fields are patched in: one append per frame instead of one per field,
   // which a pose output per IMU sample pays three times.
   const std::size_t start = out.size();
-  out.resize(start + kHeaderSize);
+  out.resize(start + kHeaderSize + payload_bytes);
   bytes::LeWriter w(out);
   w.patch(start, kSync0);
   w.patch(start + 1, kSync1);

@@ -39,10 +39,11 @@ struct FrameOptions {
 std::uint32_t default_source_id(std::uint16_t message_type);
 
 // Frame assembly: begin_frame() appends the 24-byte header (sync, reserved 0, protocol version
-// 2, the given fields; size and CRC zero) and returns its offset; after the payload has been
-// appended, end_frame() fills in the payload size and the CRC over [8, end) (spec §2.4 L197-229).
+// 2, the given fields; size and CRC zero) and `payload_bytes` zero bytes for a payload written in
+// place, and returns the header's offset; after the payload has been written or appended,
+// end_frame() fills in the payload size and the CRC over [8, end) (spec §2.4 L197-229).
 std::size_t begin_frame(std::vector<std::uint8_t>& out, std::uint16_t message_type, std::uint8_t message_version,
-                        std::uint32_t sequence, std::uint32_t source_id);
+                        std::uint32_t sequence, std::uint32_t source_id, std::size_t payload_bytes = 0);
 void end_frame(std::vector<std::uint8_t>& out, std::size_t start);
 
 class FusionEngineWriter {
@@ -57,11 +58,19 @@ class FusionEngineWriter {
     } else {
       ++next_sequence_;
     }
-    const std::size_t start = begin_frame(out, to_u16(M::kType), options.message_version.value_or(M::kVersion),
-                                          sequence, options.source_id.value_or(default_source_id(to_u16(M::kType))));
-    PayloadWriter w(out);
+    const std::uint16_t type = to_u16(M::kType);
+    const std::uint8_t version = options.message_version.value_or(M::kVersion);
+    const std::uint32_t source_id = options.source_id.value_or(default_source_id(type));
+    // The payload is measured first (the same visit, counting), the frame grows once, and the
+    // fields are written in place: a pose output per IMU sample writes ~100 fields per epoch,
+    // and one vector insert each was a tenth of the output thread's work.
+    BasicPayloadWriter<bytes::ByteCounter> counter{bytes::ByteCounter{}};
+    msg.visit(counter);
+    std::size_t payload_bytes = counter.sink().written();
+    if constexpr (requires { msg.padding(); }) payload_bytes += msg.padding();  // zeros, as grown
+    const std::size_t start = begin_frame(out, type, version, sequence, source_id, payload_bytes);
+    PayloadSpanWriter w(bytes::LeSpanWriter({out.data() + start + kHeaderSize, payload_bytes}));
     msg.visit(w);
-    if constexpr (requires { msg.padding(); }) out.insert(out.end(), msg.padding(), 0);
     end_frame(out, start);
   }
   // One framed message in the writer's own buffer (valid until the next call).

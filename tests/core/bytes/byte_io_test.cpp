@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "core/bytes/byte_reader.hpp"
@@ -55,6 +57,28 @@ TEST(ByteWriter, RoundTripEveryTypeBothEndians) {
   EXPECT_EQ(be_buf, (std::vector<std::uint8_t>{1, 2, 3, 4}));
   bw.patch<std::uint16_t>(1, 0xA0B0);
   EXPECT_EQ(be_buf, (std::vector<std::uint8_t>{1, 0xA0, 0xB0, 4}));
+}
+
+TEST(SpanWriter, WritesByHandBytesInPlaceAndRefusesToOverrun) {
+  // 0x0201 little-endian, 0x06050403, two bytes, three zeros: 11 bytes, counted and written.
+  const std::uint8_t raw[2] = {0xAA, 0xBB};
+  const auto write_all = [&](auto& w) {
+    w.u16(0x0201);
+    w.u32(0x06050403);
+    w.bytes(raw);
+    w.zeros(3);
+  };
+  ByteCounter counter;
+  write_all(counter);
+  EXPECT_EQ(counter.written(), 11u);
+
+  std::vector<std::uint8_t> buf(12, 0x77);  // one byte more than written: must stay untouched
+  LeSpanWriter w(std::span<std::uint8_t>(buf).first(11));
+  write_all(w);
+  EXPECT_EQ(w.written(), 11u);
+  EXPECT_EQ(buf, (std::vector<std::uint8_t>{0x01, 0x02, 0x03, 0x04, 0x05, 0x06, 0xAA, 0xBB, 0, 0, 0, 0x77}));
+  EXPECT_THROW(w.u8(1), std::length_error);
+  EXPECT_EQ(buf[11], 0x77);
 }
 
 }  // namespace
