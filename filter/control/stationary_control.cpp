@@ -54,7 +54,7 @@ void update_stationary(FilterCore& c, const FilterOptions& o, const ImuIncrement
   // it, as it does for levelling (alignment.cpp). Without it a car that stands for minutes before
   // it drives gets no zero-velocity or zero-rate update: its tilt drifts on the gyro biases
   // (2.8 deg after 200 s on parking_drive's IMU) and the heading found when it moves off is
-  // 20 deg wrong.
+  // 22 deg wrong.
   const bool force_quiet = scatter < o.stationary_accel_std_mps2 || speed_shows_rest(c, o);
   const bool quiet = mean_rate.norm() < o.stationary_gyro_rps && force_quiet && force_steady;
   const bool was_stationary = s.stationary;

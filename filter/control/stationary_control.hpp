@@ -1,6 +1,7 @@
 // Automatic stationary detection and the zero-velocity / zero-angular-rate updates it enables
 // (MIP §6.7). A window of IMU data is "quiet" when the mean compensated rate and the specific-force
-// scatter are small and the mean specific force has not changed since the vehicle stopped; the
+// scatter are small (or, for a vibrating vehicle, a fresh speed measurement shows it at rest:
+// speed_shows_rest) and the mean specific force has not changed since the vehicle stopped; the
 // vehicle is stationary after two quiet windows in a row, provided no speed evidence (odometry,
 // GNSS, or the filter's own velocity in navigation) says it moves: a simulated or very smooth
 // cruise is as quiet as a parked car.
