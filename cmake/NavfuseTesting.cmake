@@ -1,12 +1,16 @@
 # navfuse_add_test(NAME SOURCES a.cpp b.cpp LIBS lib1 lib2 [LABELS l1 l2])
 # One GoogleTest executable whose tests ctest discovers at test time.
 include(GoogleTest)
+# The shared captures (../shared beside the checkout by default): tests that read them skip when
+# the folder is missing. A checkout elsewhere (a git worktree, a CI cache) points here with
+# -DNAVFUSE_SHARED_DIR=/path/to/shared.
+set(NAVFUSE_SHARED_DIR "${PROJECT_SOURCE_DIR}/../shared" CACHE PATH "folder of the shared captures")
 function(navfuse_add_test name)
   cmake_parse_arguments(T "" "" "SOURCES;LIBS;LABELS" ${ARGN})
   add_executable(${name} ${T_SOURCES})
   target_link_libraries(${name} PRIVATE ${T_LIBS} GTest::gtest GTest::gtest_main navfuse_build_flags)
   target_compile_definitions(${name} PRIVATE
-    NAVFUSE_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared"
+    NAVFUSE_SHARED_DIR="${NAVFUSE_SHARED_DIR}"
     NAVFUSE_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     NAVFUSE_BINARY_DIR="${PROJECT_BINARY_DIR}")
   gtest_discover_tests(${name} DISCOVERY_MODE PRE_TEST DISCOVERY_TIMEOUT 60
