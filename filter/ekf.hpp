@@ -42,16 +42,18 @@ struct UpdateResult {
   StateVector dx = StateVector::Zero();
 };
 
+struct InnovationMoments {
+  double nis = 0.0;     // r^T S^-1 r (0 when S is not positive definite)
+  double spread = 0.0;  // tr(H P H^T): the innovation spread the state alone predicts
+};
+
 class Ekf {
  public:
   Covariance p = Covariance::Zero();
   int n = sx::kCoreCount;  // active dimension
 
-  // Normalised innovation squared without updating (for gates and tests).
-  double nis(const Observation& obs) const;
-  // tr(H P H^T): the innovation spread the state alone predicts (adaptation compares it with the
-  // residuals). Row by row, so nothing is allocated.
-  double predicted_spread(const Observation& obs) const;
+  // The innovation's statistics without updating (for the adaptations and tests).
+  InnovationMoments innovation_moments(const Observation& obs) const;
   // Gate (chi-square threshold, <= 0: no gate) then Joseph update. On acceptance `dx` is the
   // error estimate to subtract from the nominal state; P is updated. On rejection nothing changes.
   UpdateResult update(const Observation& obs, double gate);

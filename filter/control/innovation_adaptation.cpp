@@ -52,10 +52,11 @@ std::optional<InnovationWindow::Medians> InnovationWindow::recent_medians(std::i
 }
 
 InnovationWindow::Sample innovation_sample(const Ekf& ekf, const Observation& obs, std::int64_t t_ns) {
-  const double spread = ekf.predicted_spread(obs);
+  const InnovationMoments stats = ekf.innovation_moments(obs);
+  const double spread = stats.spread;
   InnovationWindow::Sample s;
   s.time_ns = t_ns;
-  s.nis_per_dim = ekf.nis(obs) / obs.rows();
+  s.nis_per_dim = stats.nis / obs.rows();
   for (int i = 0; i < obs.rows(); ++i) s.residual[static_cast<std::size_t>(i)] = obs.residual(i);
   s.lambda = spread > 0.0 ? (obs.residual.squaredNorm() - obs.r.trace()) / spread : 0.0;
   return s;

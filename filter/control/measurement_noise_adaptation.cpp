@@ -26,8 +26,8 @@ constexpr double kMinGatedFraction = 0.05;
 double update_noise_scale(NoiseScaleWindow& w, const Ekf& ekf, const Observation& obs, const AdaptationOptions& a,
                           double gate) {
   if (!a.enabled || obs.rows() == 0) return w.scale;
-  const double spread = ekf.predicted_spread(obs);
-  const double nis = ekf.nis(obs);
+  const InnovationMoments stats = ekf.innovation_moments(obs);
+  const double spread = stats.spread, nis = stats.nis;
   const double noise = obs.r.trace();
   if (!(noise > 0.0) || !std::isfinite(spread)) return w.scale;
   const double rho = (obs.residual.squaredNorm() - spread) / noise;

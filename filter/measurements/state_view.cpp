@@ -49,23 +49,27 @@ BodyVelocityModel body_velocity_at(const StateView& s, const Eigen::Vector3d& l,
   // Rate of the vehicle relative to the earth: w_eb = w_ib - C_bn w_ie.
   const Eigen::Vector3d w_eb = s.rate_b_rps - c_bn * s.earth.earth_rate_ned_rps;
   const Eigen::Vector3d v_b = c_bn * s.x.vel_ned_mps + w_eb.cross(l);
-  Eigen::Matrix<double, 3, sx::kCount> j = Eigen::Matrix<double, 3, sx::kCount>::Zero();
+  // The three non-zero blocks of the Jacobian (the model's BodyVelocityModel starts at zero):
   // C_hat^T = C^T (I + [phi x]):  C_hat^T v - C^T v = -C^T [v x] phi.
-  j.block<3, 3>(0, sx::kVel) = c_bn;
-  j.block<3, 3>(0, sx::kAtt) = -c_bn * rot::skew(s.x.vel_ned_mps);
+  const Eigen::Matrix3d d_vel = c_bn;
+  const Eigen::Matrix3d d_att = -c_bn * rot::skew(s.x.vel_ned_mps);
   // w_hat = w - d b_g:  -(d b_g x l) = [l x] d b_g.
-  j.block<3, 3>(0, sx::kGyroBias) = rot::skew(l);
+  const Eigen::Matrix3d d_gyro_bias = rot::skew(l);
 
   BodyVelocityModel m;
   if (!odometry_frame) {
     m.vel_mps = v_b;
-    m.jacobian = j;
+    m.jacobian.block<3, 3>(0, sx::kVel) = d_vel;
+    m.jacobian.block<3, 3>(0, sx::kAtt) = d_att;
+    m.jacobian.block<3, 3>(0, sx::kGyroBias) = d_gyro_bias;
     return m;
   }
   const Eigen::Vector3d alpha(0.0, s.x.mount_pitch_rad, s.x.mount_yaw_rad);
   const Eigen::Matrix3d r_m = Eigen::Matrix3d::Identity() - rot::skew(alpha);
   m.vel_mps = r_m * v_b;
-  m.jacobian.noalias() = r_m.lazyProduct(j);
+  m.jacobian.block<3, 3>(0, sx::kVel).noalias() = r_m.lazyProduct(d_vel);
+  m.jacobian.block<3, 3>(0, sx::kAtt).noalias() = r_m.lazyProduct(d_att);
+  m.jacobian.block<3, 3>(0, sx::kGyroBias).noalias() = r_m.lazyProduct(d_gyro_bias);
   // R_m_hat v - R_m v = -(d alpha x v) = [v x] d alpha.
   const Eigen::Matrix3d d_alpha = rot::skew(v_b);
   m.jacobian.col(sx::kMountPitch) = d_alpha.col(1);

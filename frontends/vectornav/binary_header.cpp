@@ -56,6 +56,12 @@ ParseStatus measure_payload(const BinaryHeader& header, std::span<const std::uin
   std::size_t len = 0;
   for (std::size_t slot = 0; slot < kGroupCount; ++slot) {
     std::uint32_t t = header.types[slot];
+    if (t == 0) continue;
+    if ((t & variable_type_mask(slot)) == 0) {  // the common case: every size from the table
+      len += fixed_types_size(slot, t);
+      if (len > max_payload) return ParseStatus::kInvalid;
+      continue;
+    }
     while (t != 0) {
       const unsigned bit = static_cast<unsigned>(std::countr_zero(t));
       t &= t - 1;

@@ -26,6 +26,35 @@ constexpr std::array<std::uint32_t, kGroupCount> make_masks() {
 }
 constexpr std::array<std::uint32_t, kGroupCount> kMasks = make_masks();
 
+constexpr std::array<std::uint32_t, kGroupCount> make_variable_masks() {
+  std::array<std::uint32_t, kGroupCount> m{};
+  for (std::size_t s = 0; s < kGroupCount; ++s)
+    for (unsigned b = 0; b < 32; ++b)
+      if (kSizes[s][b] == V) m[s] |= 1u << b;
+  return m;
+}
+constexpr std::array<std::uint32_t, kGroupCount> kVariableMasks = make_variable_masks();
+
+// Per slot and per byte of the type bits: the summed sizes of the fixed-size types that byte
+// selects, so that a message's length is four lookups per group rather than one per type (the
+// framer and the decoder measure every message).
+using ByteSums = std::array<std::array<std::array<std::uint16_t, 256>, 4>, kGroupCount>;
+constexpr ByteSums make_byte_sums() {
+  ByteSums sums{};
+  for (std::size_t s = 0; s < kGroupCount; ++s)
+    for (unsigned byte = 0; byte < 4; ++byte)
+      for (unsigned v = 0; v < 256; ++v) {
+        unsigned total = 0;
+        for (unsigned b = 0; b < 8; ++b) {
+          const std::uint8_t size = kSizes[s][byte * 8 + b];
+          if ((v >> b) & 1u && size != V) total += size;
+        }
+        sums[s][byte][v] = static_cast<std::uint16_t>(total);
+      }
+  return sums;
+}
+constexpr ByteSums kByteSums = make_byte_sums();
+
 }  // namespace
 
 std::uint8_t type_size(std::size_t slot, unsigned type_bit) {
@@ -34,6 +63,15 @@ std::uint8_t type_size(std::size_t slot, unsigned type_bit) {
 }
 
 std::uint32_t known_type_mask(std::size_t slot) { return slot < kGroupCount ? kMasks[slot] : 0; }
+
+std::uint32_t variable_type_mask(std::size_t slot) { return slot < kGroupCount ? kVariableMasks[slot] : 0; }
+
+std::size_t fixed_types_size(std::size_t slot, std::uint32_t types) {
+  if (slot >= kGroupCount) return 0;
+  const auto& sums = kByteSums[slot];
+  return std::size_t{sums[0][types & 0xFFu]} + sums[1][(types >> 8) & 0xFFu] + sums[2][(types >> 16) & 0xFFu] +
+         sums[3][types >> 24];
+}
 
 std::size_t slot_of_group_bit(unsigned bit) {
   for (std::size_t s = 0; s < kGroupCount; ++s)

@@ -105,6 +105,10 @@ inline constexpr std::uint8_t kVariableSize = 0xFF;
 std::uint8_t type_size(std::size_t slot, unsigned type_bit);
 // Mask of the type bits defined for a group slot (raw numbering, extension bits excluded).
 std::uint32_t known_type_mask(std::size_t slot);
+// Mask of the variable-length types of a group slot (SatInfo, RawMeas).
+std::uint32_t variable_type_mask(std::size_t slot);
+// Summed sizes of the fixed-size types among `types` (variable-length and undefined bits add 0).
+std::size_t fixed_types_size(std::size_t slot, std::uint32_t types);
 // Slot of a raw group bit, or kGroupCount if this firmware has no such group.
 std::size_t slot_of_group_bit(unsigned bit);
 

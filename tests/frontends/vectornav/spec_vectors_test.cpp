@@ -190,6 +190,26 @@ TEST(VnSpecVectors, TvB3AndB4HeadersAndPayloadSizes) {
   EXPECT_EQ(payload, 44u);
 }
 
+TEST(VnSpecVectors, TableSumsEqualTheTypeSizesOneByOne) {
+  // fixed_types_size (four byte lookups) against Table 2.2 read one type at a time, for every
+  // single type and for random sets of a group's defined types.
+  std::uint32_t state = 12345u;
+  const auto next = [&state] { return state = state * 1664525u + 1013904223u; };
+  for (std::size_t slot = 0; slot < kGroupCount; ++slot) {
+    for (int trial = 0; trial < 2000; ++trial) {
+      const std::uint32_t types = trial < 32 ? (1u << trial) : next() & known_type_mask(slot);
+      std::size_t expected = 0;
+      for (unsigned bit = 0; bit < 32; ++bit) {
+        const std::uint8_t size = type_size(slot, bit);
+        if ((types >> bit) & 1u && size != kVariableSize) expected += size;
+      }
+      ASSERT_EQ(fixed_types_size(slot, types), expected) << "slot " << slot << " types " << types;
+    }
+  }
+  EXPECT_EQ(variable_type_mask(kSlotGnss1), (1u << gnss_type::kSatInfo) | (1u << gnss_type::kRawMeas));
+  EXPECT_EQ(variable_type_mask(kSlotImu), 0u);
+}
+
 TEST(VnSpecVectors, CorruptedExamplesAreRejectedForTheirCrc) {
   for (const char* v : {kFigA2, kFigA3, kTvD1, kTvD2, kTvD3}) {
     auto packet = from_hex(v);
