@@ -45,25 +45,29 @@ double degrees_0_360(double rad) {
   return deg < 0.0 ? deg + 360.0 : deg;
 }
 
-}  // namespace
-
-void append_nmea_sentences(const NavSolution& s, std::uint8_t num_sats, std::vector<std::uint8_t>& out) {
+struct UtcFields {
   std::optional<nmea::TimeOfDay> time;
   std::optional<nmea::Date> date;
+};
+
+UtcFields utc_fields(const NavSolution& s) {
+  UtcFields f;
   if (s.header.time_source == TimeSource::kGps) {
     const std::int64_t unix_ns = time::unix_ns_from_gps_ns(s.header.time_ns);
     const std::int64_t day_ns = ((unix_ns % nmea::kNsPerDay) + nmea::kNsPerDay) % nmea::kNsPerDay;
-    time = nmea::TimeOfDay{day_ns, 2};
+    f.time = nmea::TimeOfDay{day_ns, 2};
     const time::UtcDateTime utc = time::utc_from_unix_ns(unix_ns);
-    date = nmea::Date{utc.year, utc.month, utc.day};
+    f.date = nmea::Date{utc.year, utc.month, utc.day};
   }
-  const bool position = has(s, NavSolution::kValidPosition);
-  const std::uint32_t quality = gga_quality(s);
+  return f;
+}
 
+nmea::Gga make_gga(const NavSolution& s, std::uint8_t num_sats, const std::optional<nmea::TimeOfDay>& time) {
+  const bool position = has(s, NavSolution::kValidPosition);
   nmea::Gga gga;
   gga.talker = kTalker;
   gga.time = time;
-  gga.quality = quality;
+  gga.quality = gga_quality(s);
   if (position) {
     gga.lat = nmea::LatLonField{s.lat_rad * rot::kRadToDeg, kMinuteDecimals};
     gga.lon = nmea::LatLonField{s.lon_rad * rot::kRadToDeg, kMinuteDecimals};
@@ -75,6 +79,19 @@ void append_nmea_sentences(const NavSolution& s, std::uint8_t num_sats, std::vec
     if (num_sats > 0) gga.num_sats = nmea::Count{num_sats, 2};
   }
   gga.height_unit = position;
+  return gga;
+}
+
+}  // namespace
+
+void append_gga_sentence(const NavSolution& s, std::uint8_t num_sats, std::vector<std::uint8_t>& out) {
+  nmea::encode(make_gga(s, num_sats, utc_fields(s).time), out);
+}
+
+void append_nmea_sentences(const NavSolution& s, std::uint8_t num_sats, std::vector<std::uint8_t>& out) {
+  const auto [time, date] = utc_fields(s);
+  const bool position = has(s, NavSolution::kValidPosition);
+  const nmea::Gga gga = make_gga(s, num_sats, time);
   nmea::encode(gga, out);
 
   nmea::Rmc rmc;
@@ -92,7 +109,7 @@ void append_nmea_sentences(const NavSolution& s, std::uint8_t num_sats, std::vec
     rmc.speed_knots = nmea::Real{speed / nmea::kMetresPerSecondPerKnot, 3};
     rmc.course_deg = nmea::Real{degrees_0_360(std::atan2(s.vel_ned_mps.y(), s.vel_ned_mps.x())), 2};
   }
-  rmc.mode = rmc_mode(quality);
+  rmc.mode = rmc_mode(gga.quality);
   nmea::encode(rmc, out);
 
   if (has(s, NavSolution::kValidAttitude) && has(s, NavSolution::kValidHeading)) {

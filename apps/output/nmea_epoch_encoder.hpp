@@ -29,5 +29,8 @@ class NmeaEpochEncoder {
 
 // The sentences of one solution, whatever the rate (for tests and the encoder above).
 void append_nmea_sentences(const NavSolution& s, std::uint8_t num_sats, std::vector<std::uint8_t>& out);
+// Its GGA sentence alone: the rover position an NTRIP client reports to a network-RTK caster
+// (apps/run/rover_position.hpp).
+void append_gga_sentence(const NavSolution& s, std::uint8_t num_sats, std::vector<std::uint8_t>& out);
 
 }  // namespace navfuse::apps

@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "apps/common/command_error.hpp"
+#include "apps/run/arrived_measurement.hpp"
 #include "apps/run/run_log.hpp"
 
 namespace navfuse::apps {
@@ -14,8 +15,9 @@ constexpr std::size_t kReadChunk = 4096;
 
 }  // namespace
 
-CorrectionsForwarder::CorrectionsForwarder(CorrectionsSource source, InputReader& receiver)
-    : source_(std::move(source)), receiver_(receiver) {
+CorrectionsForwarder::CorrectionsForwarder(CorrectionsSource source, InputReader& receiver,
+                                           const RoverPosition* position)
+    : source_(std::move(source)), receiver_(receiver), position_(position) {
   try {
     transport_ = io::open_transport("tcp://" + source_.host + ":" + std::to_string(source_.port), io::Direction::kBoth);
   } catch (const io::TransportError& e) {
@@ -36,7 +38,8 @@ nlohmann::ordered_json CorrectionsForwarder::counters() const {
   constexpr auto r = std::memory_order_relaxed;
   return {{"source", source_.text},          {"to", receiver_.name()},
           {"connections", connections_.load(r)}, {"refusals", refusals_.load(r)},
-          {"bytes_received", bytes_in_.load(r)}, {"bytes_forwarded", bytes_forwarded_.load(r)}};
+          {"bytes_received", bytes_in_.load(r)}, {"bytes_forwarded", bytes_forwarded_.load(r)},
+          {"gga_sent", gga_sent_.load(r)}};
 }
 
 void CorrectionsForwarder::run() {
@@ -54,6 +57,7 @@ void CorrectionsForwarder::run() {
       log_event("corrections '" + source_.text + "' lost: " + transport_->stats().last_error + "; reconnecting");
     }
     if (n > 0) on_bytes(std::span<const std::uint8_t>(buffer.data(), static_cast<std::size_t>(n)));
+    if (connected_) upload_gga_when_due();
   }
 }
 
@@ -64,9 +68,14 @@ void CorrectionsForwarder::on_connected() {
   head_.clear();
   chunks_ = ChunkedDecoder();
   chunked_ = false;
+  next_gga_ns_ = 0;  // a new connection is a new client to the caster: tell it at once
   if (source_.ntrip) {
-    const std::string request = ntrip_request(source_);
-    transport_->write(std::span(reinterpret_cast<const std::uint8_t*>(request.data()), request.size()));
+    const bool gga = take_gga();
+    const std::string request =
+        ntrip_request(source_, gga ? std::string_view(reinterpret_cast<const char*>(gga_.data()), gga_.size())
+                                   : std::string_view{});
+    const auto sent = transport_->write(std::span(reinterpret_cast<const std::uint8_t*>(request.data()), request.size()));
+    if (gga && sent > 0) gga_uploaded();
   }
   log_event("corrections '" + source_.text + "' connected; forwarding to '" + receiver_.name() + "'");
 }
@@ -95,6 +104,23 @@ void CorrectionsForwarder::forward(std::span<const std::uint8_t> bytes) {
     data_.assign(bytes.begin(), bytes.end());
   }
   if (!data_.empty()) bytes_forwarded_.fetch_add(receiver_.send(data_), std::memory_order_relaxed);
+}
+
+bool CorrectionsForwarder::take_gga() {
+  if (position_ == nullptr || !(source_.gga_interval_s > 0.0)) return false;
+  gga_.clear();
+  return position_->append_gga(gga_);
+}
+
+void CorrectionsForwarder::upload_gga_when_due() {
+  if (monotonic_ns() < next_gga_ns_ || !take_gga()) return;
+  // A write the transport refuses (link just lost) is tried again at the next wake, not counted.
+  if (transport_->write(gga_) > 0) gga_uploaded();
+}
+
+void CorrectionsForwarder::gga_uploaded() {
+  gga_sent_.fetch_add(1, std::memory_order_relaxed);
+  next_gga_ns_ = monotonic_ns() + static_cast<std::int64_t>(source_.gga_interval_s * 1e9);
 }
 
 void CorrectionsForwarder::refused(const std::string& reason) {

@@ -110,8 +110,10 @@ NavProcess::NavProcess(const RunOptions& options)
       throw CommandError("--corrections-to " + std::to_string(options_.corrections_to) + ": there are " +
                          std::to_string(inputs_.size()) + " inputs, numbered from 0");
     }
-    corrections_ = std::make_unique<CorrectionsForwarder>(parse_corrections_source(options_.corrections),
-                                                          *inputs_[static_cast<std::size_t>(options_.corrections_to)]);
+    CorrectionsSource source = parse_corrections_source(options_.corrections);
+    if (source.gga_interval_s > 0.0) rover_ = std::make_unique<RoverPosition>();
+    corrections_ = std::make_unique<CorrectionsForwarder>(
+        std::move(source), *inputs_[static_cast<std::size_t>(options_.corrections_to)], rover_.get());
   }
   for (const auto& in : inputs_) snapshots_.push_back({in->name(), {}});
 }
@@ -193,6 +195,7 @@ void NavProcess::on_epoch(const OutputEpoch& epoch, const filter::Engine&) {
     }
   }
   if (lcm_) lcm_->post_epoch(epoch);
+  if (rover_) rover_->update(epoch);
 }
 
 void NavProcess::track_gnss(const Measurement& m) {

@@ -6,6 +6,7 @@
 //   output threads (FE/MIP commands) --engine actions--> filter thread    |
 //   filter thread --epochs--> output threads (--fe-out, --mip-out, each its own link)
 //   filter thread --epochs, GNSS, status--> LCM thread (NAVFUSE_POSE/IMU/GNSS/STATUS)
+//   filter thread --latest position--> corrections thread (GGA to the caster) --RTCM--> an input
 //
 // Only the filter thread touches the engine. Every arrow into a consumer that may be slow is a
 // bounded queue that drops (and counts) rather than waits, so nothing downstream can stall the
@@ -29,6 +30,7 @@
 #include "apps/run/latency_tracker.hpp"
 #include "apps/run/lcm_service.hpp"
 #include "apps/run/output_sink.hpp"
+#include "apps/run/rover_position.hpp"
 #include "apps/run/run_options.hpp"
 #include "apps/run/status_reporter.hpp"
 #include "core/config/config.hpp"
@@ -80,6 +82,8 @@ class NavProcess final : private FusionObserver {
   std::vector<std::unique_ptr<InputReader>> inputs_;
   std::vector<std::unique_ptr<OutputSink>> outputs_;
   std::unique_ptr<LcmService> lcm_;
+  // Declared before the forwarder whose thread reads it: destroyed after it.
+  std::unique_ptr<RoverPosition> rover_;  // for the caster's GGA uploads (--corrections ...?gga=S)
   std::unique_ptr<CorrectionsForwarder> corrections_;
   // File outputs (--csv): written on a thread of their own, as in replay; a file never drops an
   // epoch, so this thread holds the filter back if the disk cannot keep up.

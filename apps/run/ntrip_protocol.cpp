@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cmath>
 
 #include "apps/common/command_error.hpp"
 
@@ -33,16 +34,64 @@ std::uint16_t parse_port(std::string_view text, const std::string& argument) {
   return static_cast<std::uint16_t>(value);
 }
 
+[[noreturn]] void bad_option(std::string_view option, const std::string& argument, const std::string& why) {
+  throw CommandError("--corrections '" + argument + "': option '" + std::string(option) + "': " + why);
+}
+
+// The query after '?': options joined by '&' (version=1|2 for NTRIP; gga=SECONDS for both).
+void parse_options(std::string_view query, const std::string& argument, CorrectionsSource& s) {
+  while (!query.empty()) {
+    const auto amp = query.find('&');
+    const std::string_view option = query.substr(0, amp);
+    query = amp == std::string_view::npos ? std::string_view{} : query.substr(amp + 1);
+    const auto eq = option.find('=');
+    const std::string_view key = option.substr(0, eq);
+    const std::string_view value = eq == std::string_view::npos ? std::string_view{} : option.substr(eq + 1);
+    if (key == "version" && s.ntrip) {
+      if (value != "1" && value != "2") bad_option(option, argument, "version=1 or version=2");
+      s.version = value == "1" ? 1 : 2;
+    } else if (key == "gga") {
+      double seconds = -1.0;
+      const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), seconds);
+      if (ec != std::errc() || end != value.data() + value.size() || !(seconds >= 0.0) || !std::isfinite(seconds)) {
+        bad_option(option, argument, "seconds between GGA uploads, >= 0 (0: none)");
+      }
+      s.gga_interval_s = seconds;
+    } else {
+      bad_option(option, argument, s.ntrip ? "unknown (version=1|2, gga=SECONDS)" : "unknown (gga=SECONDS)");
+    }
+  }
+}
+
 std::string lower(std::string_view s) {
   std::string out(s);
   std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return out;
 }
 
+// The source as messages and the run summary show it: the password replaced by "***".
+std::string without_password(const std::string& argument) {
+  if (!argument.starts_with("ntrip://")) return argument;
+  const std::string_view rest = std::string_view(argument).substr(8, argument.find('?') - 8);
+  const auto at = rest.rfind('@');
+  const auto colon = at == std::string_view::npos ? at : rest.substr(0, at).find(':');
+  if (colon == std::string_view::npos) return argument;
+  std::string shown = argument;
+  shown.replace(8 + colon + 1, at - colon - 1, "***");
+  return shown;
+}
+
+std::string_view trim_line_end(std::string_view line) {
+  while (!line.empty() && (line.back() == '\r' || line.back() == '\n')) line.remove_suffix(1);
+  return line;
+}
+
 }  // namespace
 
 CorrectionsSource parse_corrections_source(const std::string& argument) {
   CorrectionsSource s;
+  s.text = without_password(argument);  // what every message below shows
+  const std::string& shown = s.text;
   std::string_view rest = argument;
   if (rest.starts_with("ntrip://")) {
     s.ntrip = true;
@@ -50,34 +99,23 @@ CorrectionsSource parse_corrections_source(const std::string& argument) {
   } else if (rest.starts_with("tcp://")) {
     rest.remove_prefix(6);
   } else {
-    throw CommandError("--corrections '" + argument +
-                       "': expected ntrip://[USER[:PASSWORD]@]HOST[:PORT]/MOUNT[?version=1|2] or tcp://HOST:PORT");
+    throw CommandError("--corrections '" + shown + "': expected " + std::string(kCorrectionsSourceForms));
   }
-  std::string masked = argument;
+  if (const auto q = rest.find('?'); q != std::string_view::npos) {
+    parse_options(rest.substr(q + 1), shown, s);
+    rest = rest.substr(0, q);
+  }
   if (s.ntrip) {
-    if (const auto q = rest.find('?'); q != std::string_view::npos) {
-      const std::string_view query = rest.substr(q + 1);
-      rest = rest.substr(0, q);
-      if (query == "version=1") {
-        s.version = 1;
-      } else if (query != "version=2") {
-        throw CommandError("--corrections '" + argument + "': unknown option '" + std::string(query) +
-                           "' (version=1 or version=2)");
-      }
-    }
     if (const auto at = rest.rfind('@'); at != std::string_view::npos) {
       const std::string_view credentials = rest.substr(0, at);
       const auto colon = credentials.find(':');
       s.user = std::string(credentials.substr(0, colon));
-      if (colon != std::string_view::npos) {
-        s.password = std::string(credentials.substr(colon + 1));
-        masked.replace(8 + colon + 1, s.password.size(), "***");
-      }
+      if (colon != std::string_view::npos) s.password = std::string(credentials.substr(colon + 1));
       rest.remove_prefix(at + 1);
     }
     const auto slash = rest.find('/');
     if (slash == std::string_view::npos || slash + 1 == rest.size()) {
-      throw CommandError("--corrections '" + argument + "': no mountpoint (ntrip://HOST[:PORT]/MOUNT)");
+      throw CommandError("--corrections '" + shown + "': no mountpoint (ntrip://HOST[:PORT]/MOUNT)");
     }
     s.mount = std::string(rest.substr(slash + 1));
     rest = rest.substr(0, slash);
@@ -85,18 +123,17 @@ CorrectionsSource parse_corrections_source(const std::string& argument) {
   const auto colon = rest.rfind(':');
   s.host = std::string(rest.substr(0, colon));
   if (colon != std::string_view::npos) {
-    s.port = parse_port(rest.substr(colon + 1), argument);
+    s.port = parse_port(rest.substr(colon + 1), shown);
   } else if (s.ntrip) {
     s.port = kNtripDefaultPort;
   } else {
-    throw CommandError("--corrections '" + argument + "': tcp:// needs HOST:PORT");
+    throw CommandError("--corrections '" + shown + "': tcp:// needs HOST:PORT");
   }
-  if (s.host.empty()) throw CommandError("--corrections '" + argument + "': no host");
-  s.text = masked;
+  if (s.host.empty()) throw CommandError("--corrections '" + shown + "': no host");
   return s;
 }
 
-std::string ntrip_request(const CorrectionsSource& source) {
+std::string ntrip_request(const CorrectionsSource& source, std::string_view gga) {
   std::string r = "GET /" + source.mount + (source.version == 1 ? " HTTP/1.0\r\n" : " HTTP/1.1\r\n");
   if (source.version == 2) {
     r += "Host: " + source.host + ":" + std::to_string(source.port) + "\r\n";
@@ -104,8 +141,12 @@ std::string ntrip_request(const CorrectionsSource& source) {
   }
   r += "User-Agent: NTRIP navfuse/0.1\r\n";
   if (!source.user.empty()) r += "Authorization: Basic " + base64(source.user + ":" + source.password) + "\r\n";
+  // NTRIP 2.0 carries the rover's position in a header of its own, the sentence without its
+  // line end; NTRIP 1.0 has none, and its casters read the sentence after the request.
+  if (source.version == 2 && !gga.empty()) r += "Ntrip-GGA: " + std::string(trim_line_end(gga)) + "\r\n";
   if (source.version == 2) r += "Connection: close\r\n";
   r += "\r\n";
+  if (source.version == 1) r += gga;
   return r;
 }
 

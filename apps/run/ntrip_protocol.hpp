@@ -13,8 +13,13 @@
 
 namespace navfuse::apps {
 
-// --corrections SOURCE: ntrip://[USER[:PASSWORD]@]HOST[:PORT]/MOUNT[?version=1|2] (port 2101,
-// version 2 by default) or tcp://HOST:PORT (raw correction bytes, no protocol).
+// --corrections SOURCE: ntrip://... (port 2101, version 2 by default) or tcp://HOST:PORT (raw
+// correction bytes, no protocol). Options after '?', joined by '&': version=1|2 (NTRIP), and
+// gga=SECONDS, how often the rover's position goes upstream as an NMEA GGA sentence (network RTK,
+// VRS; 0 or absent: never).
+inline constexpr std::string_view kCorrectionsSourceForms =
+    "ntrip://[USER[:PASSWORD]@]HOST[:PORT]/MOUNT[?version=1|2&gga=SECONDS] or tcp://HOST:PORT[?gga=SECONDS]";
+
 struct CorrectionsSource {
   std::string text;  // as given, with the password masked (for messages)
   bool ntrip = false;
@@ -23,13 +28,17 @@ struct CorrectionsSource {
   std::uint16_t port = 0;
   std::string mount;
   std::string user, password;
+  double gga_interval_s = 0.0;  // 0: no GGA uploads
 };
 
 // Throws CommandError with a one-line reason.
 CorrectionsSource parse_corrections_source(const std::string& argument);
 
 // The request for source.mount (NTRIP 1.0: GET ... HTTP/1.0; 2.0: HTTP/1.1 with Ntrip-Version).
-std::string ntrip_request(const CorrectionsSource& source);
+// With the rover's position `gga` (one NMEA sentence with its CR LF; empty: none known yet), 2.0
+// carries it in the Ntrip-GGA header and 1.0 sends it right after the request's blank line.
+// Later uploads are the bare sentence on the same connection, for both versions.
+std::string ntrip_request(const CorrectionsSource& source, std::string_view gga = {});
 
 // What the caster answered, once its header is complete.
 struct NtripAnswer {

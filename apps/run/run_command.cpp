@@ -10,6 +10,7 @@
 #include "apps/common/command_help.hpp"
 #include "apps/common/summary.hpp"
 #include "apps/run/nav_process.hpp"
+#include "apps/run/ntrip_protocol.hpp"
 #include "apps/run/process_priority.hpp"
 #include "apps/run/run_log.hpp"
 #include "apps/run/run_options.hpp"
@@ -113,8 +114,9 @@ void add_run_command(CLI::App& root, int& exit_code) {
                       "Feed file inputs at the pace of their timestamps [SPEED times real time, default 1]")
           ->expected(0, 1);
   sub->add_option("--corrections", opt->corrections,
-                  "RTK corrections to forward to a receiver: ntrip://[USER[:PASSWORD]@]HOST[:PORT]/MOUNT[?version=1] "
-                  "(NTRIP 2.0 unless version=1) or tcp://HOST:PORT");
+                  "RTK corrections to forward to a receiver: " + std::string(kCorrectionsSourceForms) +
+                      " (NTRIP 2.0 unless version=1; gga=SECONDS reports navfuse's position to the caster as "
+                      "an NMEA GGA sentence that often, as network-RTK/VRS mountpoints need; default never)");
   sub->add_option("--corrections-to", opt->corrections_to,
                   "The input (0 = the first) whose port the corrections are written to (default 0)");
   sub->add_option("--rt-priority", opt->rt_priority,

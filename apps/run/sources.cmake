@@ -17,6 +17,7 @@ target_sources(navfuse_apps PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/output_sink.cpp
   ${CMAKE_CURRENT_LIST_DIR}/process_priority.cpp
   ${CMAKE_CURRENT_LIST_DIR}/realtime_pacer.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/rover_position.cpp
   ${CMAKE_CURRENT_LIST_DIR}/run_command.cpp
   ${CMAKE_CURRENT_LIST_DIR}/run_log.cpp
   ${CMAKE_CURRENT_LIST_DIR}/status_reporter.cpp

@@ -30,12 +30,49 @@ TEST(NtripSource, DefaultsToVersion2OnPort2101AndMasksThePassword) {
   EXPECT_EQ(tcp.port, 5016);
 }
 
+TEST(NtripSource, GgaIntervalOptionForBothSchemes) {
+  EXPECT_EQ(parse_corrections_source("ntrip://caster.example/M").gga_interval_s, 0.0);  // never by default
+  const CorrectionsSource v1 = parse_corrections_source("ntrip://u:p@caster.example:2102/VRS?gga=10&version=1");
+  EXPECT_EQ(v1.gga_interval_s, 10.0);
+  EXPECT_EQ(v1.version, 1);
+  EXPECT_EQ(v1.port, 2102);
+  EXPECT_EQ(v1.mount, "VRS");
+  EXPECT_EQ(v1.text, "ntrip://u:***@caster.example:2102/VRS?gga=10&version=1");
+  const CorrectionsSource v2 = parse_corrections_source("ntrip://caster.example/VRS?version=2&gga=0.5");
+  EXPECT_EQ(v2.gga_interval_s, 0.5);
+  EXPECT_EQ(v2.version, 2);
+  EXPECT_EQ(parse_corrections_source("ntrip://caster.example/VRS?gga=0").gga_interval_s, 0.0);
+  const CorrectionsSource tcp = parse_corrections_source("tcp://10.0.0.5:5016?gga=5");
+  EXPECT_EQ(tcp.gga_interval_s, 5.0);
+  EXPECT_EQ(tcp.host, "10.0.0.5");
+  EXPECT_EQ(tcp.port, 5016);
+}
+
+TEST(NtripSource, ErrorsDoNotShowThePassword) {
+  for (const char* bad : {"ntrip://rover:s3cret@caster.example/M?gga=x", "ntrip://rover:s3cret@caster.example",
+                          "ntrip://rover:s3cret@caster.example:0/M"}) {
+    try {
+      parse_corrections_source(bad);
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const CommandError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.find("s3cret"), std::string::npos) << what;
+      EXPECT_NE(what.find("rover:***@caster.example"), std::string::npos) << what;
+    }
+  }
+}
+
 TEST(NtripSource, RefusesWhatCannotBeAsked) {
   EXPECT_THROW(parse_corrections_source("ntrip://caster.example"), CommandError);          // no mountpoint
   EXPECT_THROW(parse_corrections_source("ntrip://caster.example/M?version=3"), CommandError);
   EXPECT_THROW(parse_corrections_source("tcp://caster.example"), CommandError);            // no port
   EXPECT_THROW(parse_corrections_source("http://caster.example/M"), CommandError);
   EXPECT_THROW(parse_corrections_source("tcp://h:99999"), CommandError);
+  EXPECT_THROW(parse_corrections_source("ntrip://caster.example/M?gga=-1"), CommandError);
+  EXPECT_THROW(parse_corrections_source("ntrip://caster.example/M?gga=ten"), CommandError);
+  EXPECT_THROW(parse_corrections_source("ntrip://caster.example/M?gga="), CommandError);
+  EXPECT_THROW(parse_corrections_source("ntrip://caster.example/M?gga=10&colour=red"), CommandError);
+  EXPECT_THROW(parse_corrections_source("tcp://h:5016?version=1"), CommandError);  // no protocol to choose
 }
 
 TEST(NtripRequest, Version1And2AsTheStandardShowsThem) {
@@ -47,6 +84,35 @@ TEST(NtripRequest, Version1And2AsTheStandardShowsThem) {
   EXPECT_EQ(ntrip_request(s),
             "GET /RTCM3 HTTP/1.1\r\nHost: 127.0.0.1:2101\r\nNtrip-Version: Ntrip/2.0\r\n"
             "User-Agent: NTRIP navfuse/0.1\r\nAuthorization: Basic YWI6\r\nConnection: close\r\n\r\n");
+}
+
+// The rover position of rover_position_test.cpp: 52.5163 N 13.3777 E, 40.5 m above the geoid,
+// RTK fixed with 12 satellites at 11:59:42 UTC. Checksum 0x6C: the XOR of the characters between
+// '$' and '*', worked out apart from navfuse.
+constexpr std::string_view kGga = "$GNGGA,115942.00,5230.978000,N,01322.662000,E,4,12,,40.500,M,39.500,M,,*6C\r\n";
+
+TEST(NtripRequest, Version2CarriesThePositionInTheNtripGgaHeader) {
+  const CorrectionsSource s = parse_corrections_source("ntrip://ab@127.0.0.1:2101/VRS?gga=10");
+  EXPECT_EQ(ntrip_request(s, kGga),
+            "GET /VRS HTTP/1.1\r\nHost: 127.0.0.1:2101\r\nNtrip-Version: Ntrip/2.0\r\n"
+            "User-Agent: NTRIP navfuse/0.1\r\nAuthorization: Basic YWI6\r\n"
+            "Ntrip-GGA: $GNGGA,115942.00,5230.978000,N,01322.662000,E,4,12,,40.500,M,39.500,M,,*6C\r\n"
+            "Connection: close\r\n\r\n");
+}
+
+TEST(NtripRequest, Version1SendsThePositionAfterTheRequest) {
+  const CorrectionsSource s = parse_corrections_source("ntrip://ab@127.0.0.1:2101/VRS?gga=10&version=1");
+  EXPECT_EQ(ntrip_request(s, kGga),
+            "GET /VRS HTTP/1.0\r\nUser-Agent: NTRIP navfuse/0.1\r\nAuthorization: Basic YWI6\r\n\r\n"
+            "$GNGGA,115942.00,5230.978000,N,01322.662000,E,4,12,,40.500,M,39.500,M,,*6C\r\n");
+}
+
+TEST(NtripRequest, NoPositionYetIsThePlainRequest) {
+  for (const char* uri : {"ntrip://ab@127.0.0.1:2101/VRS?gga=10", "ntrip://ab@127.0.0.1:2101/VRS?gga=10&version=1"}) {
+    const CorrectionsSource s = parse_corrections_source(uri);
+    EXPECT_EQ(ntrip_request(s, ""), ntrip_request(s)) << uri;
+    EXPECT_EQ(ntrip_request(s).find("GGA"), std::string::npos) << uri;
+  }
 }
 
 TEST(NtripAnswer, AcceptsIcyAndHttp200AndExplainsRefusals) {

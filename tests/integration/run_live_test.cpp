@@ -95,32 +95,6 @@ class LcmListener {
   std::atomic<bool> stop_{false};
 };
 
-// Plays pieces [first, last) of the log into the device at kSpeedUp times real time.
-bool play(PtyDevice& device, const SimLog& log, std::size_t first, std::size_t last) {
-  const auto wall_start = std::chrono::steady_clock::now();
-  const std::int64_t data_start = log.pieces[first].delivery_ns;
-  std::size_t begin = first == 0 ? 0 : log.pieces[first - 1].end;
-  for (std::size_t i = first; i < last;) {
-    // One write per 10 ms of wall time: everything delivered by then.
-    const auto due = wall_start + std::chrono::nanoseconds(static_cast<std::int64_t>(
-                                      static_cast<double>(log.pieces[i].delivery_ns - data_start) / kSpeedUp));
-    std::this_thread::sleep_until(due);
-    const auto horizon = std::chrono::duration_cast<std::chrono::nanoseconds>(
-        std::chrono::steady_clock::now() - wall_start + std::chrono::milliseconds(10));
-    std::size_t j = i;
-    while (j < last && static_cast<double>(log.pieces[j].delivery_ns - data_start) / kSpeedUp <=
-                           static_cast<double>(horizon.count())) {
-      ++j;
-    }
-    j = std::max(j, i + 1);
-    const std::size_t end = log.pieces[j - 1].end;
-    if (!device.write_all(log.bytes.data() + begin, end - begin)) return false;
-    begin = end;
-    i = j;
-  }
-  return true;
-}
-
 std::size_t piece_at(const SimLog& log, double seconds) {
   const std::int64_t t = log.start_ns + static_cast<std::int64_t>(seconds * 1e9);
   return static_cast<std::size_t>(std::lower_bound(log.pieces.begin(), log.pieces.end(), t,
@@ -165,7 +139,7 @@ TEST_F(RunLiveTest, SerialDeviceLcmAidingFeCommandsReplugAndSigterm) {
 
   // 1. The first 15 s of the drive: poses on LCM and FusionEngine poses on TCP at 50 Hz.
   const std::size_t cut1 = piece_at(log, 15.0);
-  ASSERT_TRUE(play(device, log, 0, cut1));
+  ASSERT_TRUE(play(device, log, 0, cut1, kSpeedUp));
   const std::int64_t t1 = log.pieces[cut1 - 1].delivery_ns;
   ASSERT_TRUE(listener.wait_pose_after(t1 - 100'000'000, kTimeoutMs)) << nav.output();
 
@@ -200,7 +174,7 @@ TEST_F(RunLiveTest, SerialDeviceLcmAidingFeCommandsReplugAndSigterm) {
 
   // 5. The next 15 s: fusion resumes (new poses on LCM), FusionEngine poses now at 10 Hz.
   const std::size_t cut2 = piece_at(log, 30.0);
-  ASSERT_TRUE(play(device, log, cut1, cut2));
+  ASSERT_TRUE(play(device, log, cut1, cut2, kSpeedUp));
   const std::int64_t t2 = log.pieces[cut2 - 1].delivery_ns;
   ASSERT_TRUE(listener.wait_pose_after(t2 - 100'000'000, kTimeoutMs)) << nav.output();
   const io::Deadline streamed(kTimeoutMs);
