@@ -202,9 +202,6 @@ struct FilterCore {
     v.accel_ned_mps2 = v.c_nb * force_b_mps2 + earth.gravity_ned_mps2;
     return v;
   }
-  double gate_for(const FilterOptions& o, int rows) const {
-    return rows >= 1 && rows <= 3 ? o.chi2_gate[static_cast<std::size_t>(rows - 1)] : 0.0;
-  }
   // NaN, or a covariance that no longer means anything: restart and flag it.
   bool check_divergence(const FilterOptions& o);
   bool navigating() const { return mode.levelled && mode.heading_known && mode.position_known; }

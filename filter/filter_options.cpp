@@ -60,7 +60,23 @@ FilterOptions options_from_config(const navfuse::config::Config& config) {
   o.gnss_velocity_std_scale = g.velocity_std_scale;
   o.gnss_timeout_s = g.timeout_s;
   o.gnss_recovery_s = g.recovery_s;
-  o.chi2_gate = {config.gates.chi2_1d, config.gates.chi2_2d, config.gates.chi2_3d};
+  const auto& gates = config.gates;
+  o.chi2_gate = {gates.chi2_1d, gates.chi2_2d, gates.chi2_3d};
+  auto own_gate = [&o](GatedAid aid, const std::optional<double>& chi2) {
+    o.aid_chi2_gate[static_cast<std::size_t>(aid)] = chi2.value_or(0.0);
+  };
+  own_gate(GatedAid::kGnssPosition, gates.gnss_position);
+  own_gate(GatedAid::kGnssVelocity, gates.gnss_velocity);
+  own_gate(GatedAid::kGnssHeading, gates.gnss_heading);
+  own_gate(GatedAid::kOdometry, gates.odometry);
+  own_gate(GatedAid::kNhc, gates.nhc);
+  own_gate(GatedAid::kStationary, gates.stationary);
+  own_gate(GatedAid::kGravity, gates.gravity);
+  own_gate(GatedAid::kPressure, gates.pressure);
+  own_gate(GatedAid::kMagnetometer, gates.magnetometer);
+  own_gate(GatedAid::kExternalPosition, gates.external_position);
+  own_gate(GatedAid::kExternalVelocity, gates.external_velocity);
+  own_gate(GatedAid::kExternalHeading, gates.external_heading);
   o.max_latency_s = config.timing.max_latency_s;
   const auto& nhc = config.nhc;
   if (nhc.lever_arm_m) o.nhc_lever_arm_m = vec(*nhc.lever_arm_m);

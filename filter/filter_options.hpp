@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 
 #include <Eigen/Core>
@@ -77,6 +78,24 @@ struct AccelTiltOptions {
   double window_s = 0.1;            // specific force averaged over this, one update per window
 };
 
+// Aiding sources that may carry a chi-square gate of their own (config gates.<source>, bound in
+// filter_options.cpp); unset, a source is gated by its update's dimension.
+enum class GatedAid : std::uint8_t {
+  kGnssPosition,
+  kGnssVelocity,
+  kGnssHeading,
+  kOdometry,          // wheel speed, vehicle speed, wheel ticks
+  kNhc,               // non-holonomic constraint
+  kStationary,        // zero-velocity and zero-rate updates
+  kGravity,           // accelerometer tilt reference
+  kPressure,          // barometric height
+  kMagnetometer,
+  kExternalPosition,
+  kExternalVelocity,
+  kExternalHeading,
+  kCount,
+};
+
 struct FilterOptions {
   ImuNoise imu;
   MagnetometerOptions magnetometer;
@@ -145,6 +164,14 @@ struct FilterOptions {
   double gnss_recovery_s = 3.0;  // sustained rejection for longer: re-anchor to GNSS
   // Chi-square innovation gate per measurement dimension (1, 2, 3): the 99.99 % quantiles.
   std::array<double, 3> chi2_gate = {15.14, 18.42, 21.11};
+  // A gate of its own per aiding source (config gates.<aid>), applied to every update of that
+  // source whatever its rows; 0: the by-dimension gate above.
+  std::array<double, static_cast<std::size_t>(GatedAid::kCount)> aid_chi2_gate{};
+  double gate_for(GatedAid aid, int rows) const {
+    const double own = aid_chi2_gate[static_cast<std::size_t>(aid)];
+    if (own > 0.0) return own;
+    return rows >= 1 && rows <= 3 ? chi2_gate[static_cast<std::size_t>(rows - 1)] : 0.0;
+  }
 
   // Multipliers on the GNSS receiver's std devs (config gnss.std_scale_*): position per fix type,
   // indexed by GnssFixType; velocity one for all.

@@ -136,6 +136,21 @@ struct GatesConfig {
   double chi2_1d = 15.14;
   double chi2_2d = 18.42;
   double chi2_3d = 21.11;
+  // A chi-square gate of its own per aiding source, for every update of it whatever its rows
+  // (unset: by dimension above). A receiver known to report multipath-free fixes can be held to a
+  // tighter gate than the odometer, or a noisy external aid given a looser one.
+  std::optional<double> gnss_position;
+  std::optional<double> gnss_velocity;
+  std::optional<double> gnss_heading;
+  std::optional<double> odometry;  // wheel speed, vehicle speed, wheel ticks
+  std::optional<double> nhc;
+  std::optional<double> stationary;  // zero-velocity and zero-rate updates
+  std::optional<double> gravity;     // accelerometer tilt reference
+  std::optional<double> pressure;
+  std::optional<double> magnetometer;
+  std::optional<double> external_position;
+  std::optional<double> external_velocity;
+  std::optional<double> external_heading;
 };
 
 struct TimingConfig {

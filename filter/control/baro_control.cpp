@@ -19,7 +19,8 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const Pressure& m, double
     return FuseResult::ok();
   }
   const double std_m = std::hypot(o.baro.height_std_m, c.baro.anchor_std_m);
-  return c.apply(o, baro_height_observation(view, altitude_m + c.baro.offset_m, std_m), o.chi2_gate[0]);
+  const Observation obs = baro_height_observation(view, altitude_m + c.baro.offset_m, std_m);
+  return c.apply(o, obs, o.gate_for(GatedAid::kPressure, obs.rows()));
 }
 
 }  // namespace navfuse::filter

@@ -30,7 +30,7 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const ExternalPosition& m
     return FuseResult::ok();
   }
   const Observation obs = external_position_observation(c.view(shift_s), m);
-  const FuseResult r = c.apply(o, obs, c.gate_for(o, obs.rows()));
+  const FuseResult r = c.apply(o, obs, o.gate_for(GatedAid::kExternalPosition, obs.rows()));
   if (r.used) c.mode.last_absolute_position_ns = m.header.time_ns;
   return r;
 }
@@ -40,7 +40,7 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const ExternalVelocity& m
   if ((m.header.valid & 0b111u) == 0) return FuseResult::reject(RejectReason::kInvalid);
   if (!c.mode.levelled || !c.mode.heading_known) return FuseResult::reject(RejectReason::kNotAligned);
   const Observation obs = external_velocity_observation(c.view(shift_s), m);
-  return c.apply(o, obs, c.gate_for(o, obs.rows()));
+  return c.apply(o, obs, o.gate_for(GatedAid::kExternalVelocity, obs.rows()));
 }
 
 FuseResult fuse(FilterCore& c, const FilterOptions& o, const ExternalHeading& m,
@@ -51,7 +51,8 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const ExternalHeading& m,
     set_heading(c, m.heading_rad, m.std_rad);
     return FuseResult::ok();
   }
-  return c.apply(o, external_heading_observation(c.view(shift_s), m), o.chi2_gate[0]);
+  const Observation obs = external_heading_observation(c.view(shift_s), m);
+  return c.apply(o, obs, o.gate_for(GatedAid::kExternalHeading, obs.rows()));
 }
 
 }  // namespace navfuse::filter

@@ -47,9 +47,9 @@ void record_speed_from_fixes(FilterCore& c, const FilterOptions& o, const Alignm
 // noise then sees the innovations against the noise the update will use, so an optimistic
 // receiver is not mistaken for an overconfident filter. The pending covariance propagation is
 // flushed first: both judge the residuals against the P the update will use.
-FuseResult adapt_and_apply(FilterCore& c, const FilterOptions& o, NoiseScaleWindow& noise,
+FuseResult adapt_and_apply(FilterCore& c, const FilterOptions& o, GatedAid aid, NoiseScaleWindow& noise,
                            InnovationWindow& innovations, Observation& obs, std::int64_t now) {
-  const double gate = c.gate_for(o, obs.rows());
+  const double gate = o.gate_for(aid, obs.rows());
   c.flush_covariance(o);
   obs.r *= update_noise_scale(noise, c.ekf, obs, o.adaptation, gate);
   adapt_to_innovation(c, o, innovations, obs, now);
@@ -93,7 +93,8 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
       c.view(shift_s), m, antenna_of_receiver(c.x, o.gnss_secondary_lever_arm_m, m.receiver_id));
   const double std_scale = o.gnss_position_std_scale_for(m.fix);
   obs.r *= std_scale * std_scale;
-  const FuseResult r = adapt_and_apply(c, o, c.adaptation.position_noise, c.adaptation.position, obs, now);
+  const FuseResult r =
+      adapt_and_apply(c, o, GatedAid::kGnssPosition, c.adaptation.position_noise, c.adaptation.position, obs, now);
   if (r.used) {
     c.gnss.last_position_ns = now;
     c.gnss.position_reject_since_ns = INT64_MIN;
@@ -144,7 +145,8 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssVelocity& m,
   Observation obs = gnss_velocity_observation(
       c.view(shift_s), m, antenna_of_receiver(c.x, o.gnss_secondary_lever_arm_m, m.receiver_id));
   obs.r = cov;
-  const FuseResult r = adapt_and_apply(c, o, c.adaptation.velocity_noise, c.adaptation.velocity, obs, now);
+  const FuseResult r =
+      adapt_and_apply(c, o, GatedAid::kGnssVelocity, c.adaptation.velocity_noise, c.adaptation.velocity, obs, now);
   if (r.used) {
     c.gnss.last_velocity_ns = now;
     c.gnss.velocity_reject_since_ns = INT64_MIN;
@@ -175,7 +177,8 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssHeading& m,
     c.gnss.last_heading_ns = m.header.time_ns;
     return FuseResult::ok();
   }
-  const FuseResult r = c.apply(o, gnss_heading_observation(c.view(shift_s), m, baseline), o.chi2_gate[0]);
+  const Observation obs = gnss_heading_observation(c.view(shift_s), m, baseline);
+  const FuseResult r = c.apply(o, obs, o.gate_for(GatedAid::kGnssHeading, obs.rows()));
   if (r.used) c.gnss.last_heading_ns = m.header.time_ns;
   return r;
 }

@@ -54,8 +54,8 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const Magnetometer& m, do
     set_heading(c, magnetic_heading_rad(c.x.q_nb, field_v, *declination), mo.heading_std_rad);
     return FuseResult::ok();
   }
-  return c.apply(o, magnetic_heading_observation(c.view(shift_s), field_v, *declination, mo.heading_std_rad),
-                 o.chi2_gate[0]);
+  const Observation obs = magnetic_heading_observation(c.view(shift_s), field_v, *declination, mo.heading_std_rad);
+  return c.apply(o, obs, o.gate_for(GatedAid::kMagnetometer, obs.rows()));
 }
 
 }  // namespace navfuse::filter

@@ -27,7 +27,7 @@ FuseResult fuse_speed(FilterCore& c, const FilterOptions& o, const std::optional
   if (!note_speed(c, reading, time_ns)) return FuseResult::reject(RejectReason::kInvalid);
   if (!c.navigating()) return FuseResult::reject(RejectReason::kNotAligned);
   const Observation obs = wheel_speed_observation(c.view(shift_s), *reading, o.wheel_lever_arm_m);
-  return c.apply(o, obs, o.chi2_gate[0]);
+  return c.apply(o, obs, o.gate_for(GatedAid::kOdometry, obs.rows()));
 }
 
 // The reference slot of the stream `m` belongs to: its own, else a free one, else the oldest.
@@ -72,7 +72,7 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const WheelTicks& m, doub
   // Forward acceleration of the vehicle: specific force plus gravity, in the vehicle frame.
   const double forward_accel = c.force_b_mps2.x() + (view.c_nb.transpose() * c.earth.gravity_ned_mps2).x();
   const Observation obs = wheel_tick_observation(view, *speed, o.wheel_lever_arm_m, forward_accel);
-  return c.apply(o, obs, o.chi2_gate[0]);
+  return c.apply(o, obs, o.gate_for(GatedAid::kOdometry, obs.rows()));
 }
 
 void apply_nonholonomic(FilterCore& c, const FilterOptions& o) {
@@ -84,7 +84,7 @@ void apply_nonholonomic(FilterCore& c, const FilterOptions& o) {
   c.odometry.last_nhc_ns = c.x.time_ns;
   const Observation obs = nonholonomic_observation(c.view(0.0), o.nhc_lever_arm_m.value_or(o.wheel_lever_arm_m),
                                                    o.nhc_lateral_std_mps, o.nhc_vertical_std_mps);
-  if (c.apply(o, obs, o.chi2_gate[1]).used) ++c.mode.nhc_updates;
+  if (c.apply(o, obs, o.gate_for(GatedAid::kNhc, obs.rows())).used) ++c.mode.nhc_updates;
 }
 
 }  // namespace navfuse::filter

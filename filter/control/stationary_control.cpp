@@ -71,7 +71,8 @@ void update_stationary(FilterCore& c, const FilterOptions& o, const ImuIncrement
   s.sum_rate_sq = 0.0;
   if (!s.stationary || !o.zero_velocity_updates) return;
 
-  const FuseResult zupt = c.apply(o, zero_velocity_observation(c.view(0.0), o.zupt_std_mps), o.chi2_gate[2]);
+  const Observation zero_velocity = zero_velocity_observation(c.view(0.0), o.zupt_std_mps);
+  const FuseResult zupt = c.apply(o, zero_velocity, o.gate_for(GatedAid::kStationary, zero_velocity.rows()));
   if (zupt.used) {
     ++c.mode.zupts;
   } else if (!c.navigating() && zupt.reason == RejectReason::kChi2Gate) {
@@ -97,7 +98,8 @@ void update_stationary(FilterCore& c, const FilterOptions& o, const ImuIncrement
     const double horizontal_earth_rate = c.earth.earth_rate_ned_rps.head<2>().norm();
     std_rps = std::hypot(std_rps, horizontal_earth_rate);
   }
-  c.apply(o, zero_rate_observation(c.view(0.0), mean_raw_rate, std_rps), o.chi2_gate[2]);
+  const Observation zero_rate = zero_rate_observation(c.view(0.0), mean_raw_rate, std_rps);
+  c.apply(o, zero_rate, o.gate_for(GatedAid::kStationary, zero_rate.rows()));
 }
 
 }  // namespace navfuse::filter

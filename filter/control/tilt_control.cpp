@@ -30,7 +30,8 @@ void update_accel_tilt(FilterCore& c, const FilterOptions& o, const ImuIncrement
   const StateView view = c.view(0.0);
   const double deviation = std::abs(mean_force.norm() - gravity_specific_force_mps2(view).norm());
   if (deviation > o.accel_tilt.max_deviation_mps2) return;
-  if (c.apply(o, gravity_vector_observation(view, mean_force, o.accel_tilt.std_mps2), o.chi2_gate[2]).used) {
+  const Observation obs = gravity_vector_observation(view, mean_force, o.accel_tilt.std_mps2);
+  if (c.apply(o, obs, o.gate_for(GatedAid::kGravity, obs.rows())).used) {
     ++s.updates;
   }
 }

@@ -92,6 +92,23 @@ TEST(ConfigOptions, KeysReachTheirOptionsInSiUnits) {
   EXPECT_EQ(o.max_latency_s, 0.5);
 }
 
+TEST(ConfigOptions, AnAidsGateReplacesTheDimensionGateForThatAidOnly) {
+  const FilterOptions o = options_from_config(config::load_from_string(
+      "gates: {chi2_1d: 6.63, chi2_3d: 11.34, gnss_position: 30, odometry: 3.84, stationary: 50}\n"));
+  EXPECT_EQ(o.gate_for(GatedAid::kGnssPosition, 3), 30.0);
+  EXPECT_EQ(o.gate_for(GatedAid::kGnssPosition, 2), 30.0);  // whatever the update's rows
+  EXPECT_EQ(o.gate_for(GatedAid::kOdometry, 1), 3.84);
+  EXPECT_EQ(o.gate_for(GatedAid::kStationary, 3), 50.0);
+  // Unset: by the update's dimension.
+  EXPECT_EQ(o.gate_for(GatedAid::kGnssVelocity, 3), 11.34);
+  EXPECT_EQ(o.gate_for(GatedAid::kGnssHeading, 1), 6.63);
+  EXPECT_EQ(o.gate_for(GatedAid::kNhc, 2), 18.42);
+  EXPECT_EQ(o.gate_for(GatedAid::kExternalPosition, 1), 6.63);
+  // The defaults set no gate of any aid's own.
+  const FilterOptions d = options_from_config(config::defaults_for(config::DeviceProfile::kGeneric));
+  for (double g : d.aid_chi2_gate) EXPECT_EQ(g, 0.0);
+}
+
 TEST(ConfigOptions, NhcPointIsItsOwnKeyOrTheWheel) {
   // Unset: the constraint is applied at the wheel (odometer) point.
   const FilterOptions wheel = options_from_config(config::load_from_string("wheel: {lever_arm_m: [-1.2, 0, 0.3]}\n"));

@@ -65,6 +65,31 @@ TEST(ExternalAiding, HeadingThenPositionReachNavigation) {
   EXPECT_LT(e.solution().pos_std_ned_m.head<2>().norm(), 0.5);
 }
 
+// gates.external_position (FilterOptions::aid_chi2_gate): a position 1.5 m off, against fixes of
+// 0.5 m std (NIS about 1.5^2 / 0.5^2 = 9 once the filter has converged), passes the 3-D gate
+// (21.11) and fails a gate of 4 set for external positions; the same gate set for another source
+// leaves positions to the by-dimension gate.
+TEST(ExternalAiding, AnAidsOwnGateAppliesToThatAidOnly) {
+  auto gated_positions = [](GatedAid aid, double chi2) {
+    FilterOptions o;
+    o.initial_heading_rad = kRpy.z();
+    o.aid_chi2_gate[static_cast<std::size_t>(aid)] = chi2;
+    Engine e{o};
+    test::LineTrajectory traj({0.6, -1.2, 80.0}, Eigen::Vector3d::Zero(), kRpy, 200.0);
+    const std::uint32_t xyz = ExternalPosition::kValidX | ExternalPosition::kValidY | ExternalPosition::kValidZ;
+    for (int s = 0; s < 20; ++s) {
+      for (int k = 0; k < 200; ++k) e.process(traj.next());
+      const Eigen::Vector3d off = s == 15 ? Eigen::Vector3d(1.5, 0.0, 0.0) : Eigen::Vector3d::Zero();
+      e.process(position_at(traj.truth(), PositionFrame::kLlh, xyz, off));
+    }
+    EXPECT_EQ(e.solution().mode, NavMode::kNavigation);
+    return e.stats().of(MeasurementKind::kExternalPosition).rejected_for(RejectReason::kChi2Gate);
+  };
+  EXPECT_EQ(gated_positions(GatedAid::kExternalPosition, 4.0), 1u);
+  EXPECT_EQ(gated_positions(GatedAid::kExternalVelocity, 4.0), 0u);
+  EXPECT_EQ(gated_positions(GatedAid::kExternalPosition, 0.0), 0u);  // 0: by dimension
+}
+
 TEST(ExternalAiding, VehicleFrameVelocityIsFused) {
   FilterOptions o;
   o.initial_heading_rad = kRpy.z();

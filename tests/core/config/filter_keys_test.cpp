@@ -111,6 +111,8 @@ TEST(FilterKeys, OutOfPhysicalRangeRefusedNamingTheKey) {
       {"zupt: {std_mps: .nan}", "zupt.std_mps: expected a finite number"},
       {"zupt: {max_rate_rad_s: 50}", "zupt.max_rate_rad_s: must be in (0, 10], got 50"},
       {"gates: {chi2_3d: 0.5}", "gates.chi2_3d: must be in [1, 1e+06], got 0.5"},
+      {"gates: {gnss_position: 0}", "gates.gnss_position: must be in [1, 1e+06], got 0"},
+      {"gates: {odometry: .inf}", "gates.odometry: expected a finite number"},
       {"timing: {max_latency_s: 11}", "timing.max_latency_s: must be in [0, 10], got 11"},
   };
   for (const auto& r : refused) {
