@@ -3,11 +3,12 @@
 
 The message types are generated from core/lcm/*.lcm at build time (lcm-gen --python) into
 <build>/generated/lcm-python; LCM's own Python module is Debian's python3-lcm where the
-distribution has it. For example, with `navfuse run ... --lcm` or `navfuse replay ... --lcm`
-publishing:
+distribution has it, else PyPI's `lcm` (pip install lcm; Debian 12 has no python3-lcm). For
+example, with `navfuse run ... --lcm` or `navfuse replay ... --lcm` publishing:
 
     PYTHONPATH=build/release/generated/lcm-python python3 examples/python/pose_subscriber.py
     PYTHONPATH=... python3 examples/python/pose_subscriber.py --url 'udpm://239.255.76.67:7667?ttl=0' --count 10
+    PYTHONPATH=... python3 examples/python/pose_subscriber.py --mode navigation
 """
 import argparse
 import sys
@@ -35,6 +36,7 @@ def main():
     parser.add_argument("--count", type=int, default=0, help="exit after this many poses (default: run until Ctrl-C)")
     parser.add_argument("--timeout", type=float, default=0.0,
                         help="exit with status 1 when no pose came for this many seconds (default: wait forever)")
+    parser.add_argument("--mode", choices=MODES, help="print (and count) only poses in this mode")
     args = parser.parse_args()
 
     lc = lcm.LCM(args.url) if args.url else lcm.LCM()
@@ -42,7 +44,10 @@ def main():
 
     def on_pose(_channel, data):
         nonlocal received
-        print(describe(pose_t.decode(data)), flush=True)
+        pose = pose_t.decode(data)
+        if args.mode and (pose.mode >= len(MODES) or MODES[pose.mode] != args.mode):
+            return
+        print(describe(pose), flush=True)
         received += 1
 
     lc.subscribe(CHANNEL, on_pose)
