@@ -140,19 +140,21 @@ TrajectorySpec nine_minute_drive() {
   return t;
 }
 
-// The reference drive 24 times over (8 hours, each lap from a standstill to a standstill): a
-// log of about a gigabyte, for measuring memory against input size (tests/bench/bench_memory.sh).
-TrajectorySpec eight_hour_drive() {
-  constexpr int kLaps = 24;
+// The 20-minute reference drive `laps` times over, each lap from a standstill to a standstill:
+// long logs for measuring time and memory against input size. 24 laps (drive_8h, about a
+// gigabyte of VN-300 binary): tests/bench/bench_memory.sh; 3 laps (drive_1h, the hour of 200 Hz
+// log issue 16's smoother goal is stated for): tests/bench/smooth_throughput.sh.
+TrajectorySpec repeated_drive(int laps) {
   TrajectorySpec t = reference_drive();
   const std::vector<MotionSegment> lap = t.segments;
-  for (int i = 1; i < kLaps; ++i) t.segments.insert(t.segments.end(), lap.begin(), lap.end());
+  for (int i = 1; i < laps; ++i) t.segments.insert(t.segments.end(), lap.begin(), lap.end());
   return t;
 }
 
 std::vector<std::string_view> scenario_names() {
-  std::vector<std::string_view> names = {"static_start", "drive_outage", "rtk_drive",  "drive_short", "delayed_gnss",
-                                         "outliers",     "dual_antenna", "drive_9min", "drive_8h", "calibration_drive"};
+  std::vector<std::string_view> names = {"static_start", "drive_outage", "rtk_drive", "drive_short",
+                                         "delayed_gnss", "outliers",     "dual_antenna", "drive_9min",
+                                         "drive_1h",     "drive_8h",     "calibration_drive"};
   for (std::string_view n : reality_scenario_names()) names.push_back(n);
   return names;
 }
@@ -208,7 +210,17 @@ std::optional<Scenario> find_scenario(std::string_view name) {
     add_installation_errors(s);
     return s;
   }
-  if (name == "drive_8h") return base_scenario("drive_8h", eight_hour_drive());
+  if (name == "drive_8h") return base_scenario("drive_8h", repeated_drive(24));
+  if (name == "drive_1h") {
+    // drive_outage's 120 s GNSS outage in every lap: what the smoother is for.
+    Scenario s = base_scenario("drive_1h", repeated_drive(3));
+    constexpr double kLap_s = 1200.0;
+    for (int lap = 0; lap < 3; ++lap) {
+      const double start_s = lap * kLap_s + kDriveOutageStart_s;
+      s.gnss.outages.push_back({start_s, start_s + kDriveOutageDuration_s});
+    }
+    return s;
+  }
   return find_reality_scenario(name);
 }
 

@@ -1,18 +1,19 @@
 #!/usr/bin/env bash
 # `navfuse smooth` throughput and memory (issue 16's scale goal: a 1-hour 200 Hz log within 2 GB
-# and at most 10x the forward replay's time): the 20-minute 200 Hz drive (`navfuse sim --scenario
-# drive_outage`, VN-300 binary with a 50 Hz wheel-speed log) replayed and smoothed as whole
-# processes, timed and measured by /usr/bin/time (wall time, peak RSS). Prints IMU samples/s of
-# each, the smooth/replay time ratio, peak RSS, the forward record's size on disk (from the
-# summary) per hour of log, and the peak RSS growth per hour of log: the slope between this log
-# and the 3-minute drive_short (the fixed part, code and buffers, cancels out).
+# and at most 10x the forward replay's time): that hour of 200 Hz drive (`navfuse sim --scenario
+# drive_1h`: three laps of drive_outage, a 120 s GNSS outage in each, VN-300 binary with a 50 Hz
+# wheel-speed log) replayed and smoothed as whole processes, timed and measured by /usr/bin/time
+# (wall time, peak RSS). Prints IMU samples/s of each, the smooth/replay time ratio, peak RSS, the
+# forward record's size on disk (from the summary) per hour of log, and the peak RSS growth per
+# hour of log: the slope between this log and the 3-minute drive_short (the fixed part, code and
+# buffers, cancels out).
 #
 # Usage: tests/bench/smooth_throughput.sh [BUILD_DIR] [RUNS]     (default build/release, 3)
 BENCH_NAME=smooth_throughput
 DEFAULT_RUNS=3
 source "$(dirname "$0")/whole_process_setup.sh"
 
-"$NAVFUSE" sim --scenario drive_outage --format vn --out "$work/drive.vnb" --wheel-out "$work/wheel.p1log" \
+"$NAVFUSE" sim --scenario drive_1h --format vn --out "$work/drive.vnb" --wheel-out "$work/wheel.p1log" \
   --device-rate 50 --quiet
 "$NAVFUSE" smooth "$work/drive.vnb" "$work/wheel.p1log" --rate 0 --csv "$work/warm.csv" \
   --summary-json "$work/summary.json" --quiet

@@ -178,6 +178,17 @@ TEST(Scenarios, AllNamedScenariosAreWellFormed) {
   EXPECT_DOUBLE_EQ(d.gnss.noise.horizontal_std_m, 1.5);
   EXPECT_EQ(d.gnss.lever_arm_m, Eigen::Vector3d(0.8, -0.4, -1.3));
   EXPECT_DOUBLE_EQ(d.imu.errors.gyro_arw_deg_rthr, 0.1);
+  // drive_1h: three laps of it, an hour, drive_outage's outage in each lap, again at 20 m/s.
+  const Scenario hour = make_scenario("drive_1h");
+  const Trajectory hour_traj(hour.trajectory, hour.start_time_ns);
+  EXPECT_DOUBLE_EQ(hour_traj.duration_s(), 3600.0);
+  ASSERT_EQ(hour.gnss.outages.size(), 3u);
+  for (const auto& outage : hour.gnss.outages) {
+    EXPECT_DOUBLE_EQ(outage.end_s - outage.start_s, d.gnss.outages[0].end_s - d.gnss.outages[0].start_s);
+    for (double t = outage.start_s; t <= outage.end_s; t += 1.0) {
+      EXPECT_DOUBLE_EQ(hour_traj.kinematics(t).speed_mps, 20.0) << t;
+    }
+  }
   const Scenario rtk = make_scenario("rtk_drive");
   EXPECT_EQ(rtk.gnss.fix, GnssFixType::kRtkFixed);
   EXPECT_DOUBLE_EQ(rtk.gnss.rate_hz, 10.0);
