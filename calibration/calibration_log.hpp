@@ -51,6 +51,9 @@ struct CalibrationSetup {
   double nhc_min_speed_mps = 1.0;
   double gyro_arw_rad_rts = 1e-4;   // white noise of the IMU (preintegration weights)
   double accel_vrw_mps_rts = 1e-3;
+  // Multiplier on the white-noise variances above, found by calibrate() from the IMU factors' own
+  // residuals (vibration far above the data sheet); 1 at the start.
+  double imu_noise_scale = 1.0;
   double gyro_bias_std_rps = 1e-5;  // bias instability: a constant bias's allowance per interval
   double accel_bias_std_mps2 = 1e-4;
   double gnss_velocity_std_scale = 1.0;

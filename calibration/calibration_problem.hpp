@@ -29,8 +29,13 @@ struct CalibrationOptions {
   double huber_sigmas = 2.0;  // whitened residual beyond which a loss grows linearly
   double lever_arm_prior_std_m = 0.5;  // around the configured lever arm (gnss_factors.hpp LeverArmPrior)
   int threads = 2;
-  int max_passes = 4;               // relinearisations about the estimated time offset
+  int max_passes = 8;               // relinearisations about the estimated time offset
   double offset_tolerance_s = 2e-4;  // ... until it moves less than this
+  // IMU noise re-weighting between passes (calibrate()): the preintegration variances are scaled
+  // by the IMU factors' variance factor while it exceeds `imu_variance_threshold`, up to
+  // `max_imu_noise_scale` in all (1e4: std x 100, beyond anything vibration does to a bolted IMU).
+  double imu_variance_threshold = 1.5;
+  double max_imu_noise_scale = 1e4;
 };
 
 // Never throws on bad data: a log that cannot be calibrated comes back with `message` saying why

@@ -44,6 +44,10 @@ struct CalibrationResult {
   double initial_cost = 0.0;
   double final_cost = 0.0;
   double position_rms_m = 0.0;  // GNSS position residual RMS after the fit (antenna, metres)
+  // Mean squared whitened IMU-factor residual per dimension of this solve (about 1 when the
+  // IMU's noise is what the preintegration assumed), and the variance multiplier it was solved with.
+  double imu_variance_factor = 1.0;
+  double imu_noise_scale = 1.0;
   double wall_s = 0.0;
   bool converged = false;
   bool covariance_ok = false;

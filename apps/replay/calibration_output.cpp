@@ -63,7 +63,9 @@ std::string solve_line(const calib::CalibrationResult& r) {
   s << r.epochs << " epochs, " << r.imu_factors << " IMU factors, " << r.gnss_position_residuals << " GNSS positions, "
     << r.gnss_velocity_residuals << " velocities, " << r.speed_residuals << " wheel speeds, " << r.nhc_residuals
     << " NHC; " << r.iterations << " iterations, " << (r.converged ? "converged" : "NOT converged")
-    << ", GNSS position residual RMS " << number(r.position_rms_m, 3) << " m, " << number(r.wall_s, 1) << " s";
+    << ", GNSS position residual RMS " << number(r.position_rms_m, 3) << " m, IMU noise variances x"
+    << number(r.imu_noise_scale, 2) << " (IMU residuals " << number(r.imu_variance_factor, 2) << " per dimension), "
+    << number(r.wall_s, 1) << " s";
   return s.str();
 }
 
@@ -131,6 +133,8 @@ nlohmann::ordered_json calibration_json(const calib::CalibrationResult& r) {
   j["converged"] = r.converged;
   j["covariance_ok"] = r.covariance_ok;
   j["position_rms_m"] = r.position_rms_m;
+  j["imu_noise_scale"] = r.imu_noise_scale;
+  j["imu_variance_factor"] = r.imu_variance_factor;
   j["wall_s"] = r.wall_s;
   j["message"] = r.message;
   return j;

@@ -107,6 +107,11 @@ void add_fusion_command(CLI::App& root, int& exit_code, const char* name, const 
     sub->add_option("--calibration-out", o.calibration_out,
                     "Calibrate lever arm, IMU mounting, IMU time offset, odometer scale and IMU biases over the "
                     "log (Ceres batch fit from the smoothed solution); write the config with them to this file");
+    sub->add_option("--calibration-rounds", o.calibration_rounds,
+                    "With --calibration-out: smooth and calibrate again from the calibrated installation, at most "
+                    "this many times in all (stops when a round changes nothing)")
+        ->check(CLI::Range(1, 10))
+        ->capture_default_str();
     add_examples(sub, {{"the demo drive smoothed, scored against truth (forward and smoothed), poses to CSV",
                         "navfuse smooth --config data/demo/vn300.yaml data/demo/vn300.vnb data/demo/vn300_wheel.p1log "
                         "--truth data/demo/truth.csv --csv smoothed.csv"},

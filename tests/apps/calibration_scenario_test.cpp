@@ -99,6 +99,51 @@ TEST(CalibrationScenario, SmoothRecoversTheSimulatedInstallation) {
   EXPECT_NE(text.str().find("#   imu.time_offset_s: "), std::string::npos);  // std devs in comments
 }
 
+// Issue 16's held-out check, on the drive built from issue 14's description of it (sim
+// parking_drive: tight car-park corners, 4 Hz RTK, an ADIS16465-class IMU at 100 Hz with car
+// vibration, its clock 125 ms behind GNSS, no odometer): the config has the IMU's data-sheet noise
+// and no time offset; the calibration must find the 125 ms within 5 ms. One round stops short
+// (-119.2 ms, 2026-11-24: the smoothed trajectory it starts from was made with the offset
+// missing, heading 2 deg RMS off; before the IMU noise re-weighting, -98.9 ms); the second, from
+// the first round's installation, gets there (-127.3 +- 1.1 ms).
+TEST(CalibrationScenario, TheParkingDrivesImuOffsetIsFoundInTwoRounds) {
+  set_calibration_solver([](const calib::CalibrationLog& log) { return calib::calibrate(log); });
+  const std::filesystem::path dir = testing::scratch_dir();
+  SimOptions sim;
+  sim.scenario = "parking_drive";
+  sim.format = "vn";
+  sim.out_path = (dir / "parking.vnb").string();
+  sim.device_rate_hz = 0.0;
+  run_sim(sim);
+  const sim::Scenario truth = sim::make_scenario("parking_drive");
+  const std::string config_path = (dir / "parking.yaml").string();
+  std::ofstream(config_path) << "device: generic\nplatform: land\n"
+                                "imu:\n  mounting_rpy_deg: [180, 0, -90]\n  gyro_arw_deg_rthr: 0.15\n"
+                                "  gyro_bias_instability_deg_hr: 2\n  accel_vrw_mps_rthr: 0.03\n"
+                                "  accel_bias_instability_mps2: 3.5e-5\n  initial_gyro_bias_std_deg_hr: 50\n"
+                                "  initial_accel_bias_std_mps2: 0.02\n"
+                                "gnss:\n  lever_arm_m: [0.15, -0.30, -0.20]\n";
+  auto offset_error_ms = [&](int rounds, double* std_ms) {
+    ReplayOptions o;
+    o.config_path = config_path;
+    o.inputs = {sim.out_path};
+    o.smooth = true;
+    o.calibration_out = (dir / "calib.yaml").string();
+    o.calibration_rounds = rounds;
+    const ReplayResult result = run_replay(o);
+    EXPECT_TRUE(result.failure.empty()) << result.failure;
+    EXPECT_EQ(result.calibration_rounds, rounds);
+    std::printf("%d round(s):\n%s", rounds, result.calibration_text.c_str());
+    const nlohmann::ordered_json& c = result.summary.extra.at("batch_calibration");
+    *std_ms = parameter(c, "imu.time_offset_s", "std");
+    return parameter(c, "imu.time_offset_s", "estimate") - truth.imu.time_offset_s * 1e3;
+  };
+  double std_ms = 0.0;
+  const double error_ms = offset_error_ms(2, &std_ms);
+  EXPECT_LT(std::abs(error_ms), 5.0);
+  EXPECT_LT(std::abs(error_ms), 3.0 * std_ms);
+}
+
 TEST(CalibrationScenario, CalibrationOutNeedsSmoothAndASolver) {
   ReplayOptions o;
   o.inputs = {std::string(NAVFUSE_SOURCE_DIR) + "/data/demo/vn300.vnb"};
