@@ -19,7 +19,10 @@
 //
 // A covariance re-inflation is recorded as a zero-length interval with Phi = D (forward_record.hpp)
 // and no noise: a node like any other, whose gain P+ D (D P+ D)^-1 = D^-1 shrinks the position
-// and velocity correction carried back through it by the inflation factor.
+// and velocity correction carried back through it by the inflation factor, while fixes arrive
+// (there a jump is the installation's). One that comes after a GNSS outage (no position-observing
+// update for kOutageGapNs, rts_smoother.cpp) passes the correction unchanged (gain I): the fix
+// that ended the outage then corrects the outage's end.
 //
 // Restarts and breaks (forward_record.hpp) end a segment: each is smoothed on its own, and its
 // last node keeps the filtered state. Only intervals that start navigating (levelled, heading and

@@ -18,6 +18,7 @@
 #include "apps/simcmd/sim_command.hpp"
 #include "calibration/calibration_problem.hpp"
 #include "core/config/config.hpp"
+#include "parking_drive_log.hpp"
 #include "test_files.hpp"
 
 namespace navfuse::apps {
@@ -109,24 +110,12 @@ TEST(CalibrationScenario, SmoothRecoversTheSimulatedInstallation) {
 TEST(CalibrationScenario, TheParkingDrivesImuOffsetIsFoundInTwoRounds) {
   set_calibration_solver([](const calib::CalibrationLog& log) { return calib::calibrate(log); });
   const std::filesystem::path dir = testing::scratch_dir();
-  SimOptions sim;
-  sim.scenario = "parking_drive";
-  sim.format = "vn";
-  sim.out_path = (dir / "parking.vnb").string();
-  sim.device_rate_hz = 0.0;
-  run_sim(sim);
+  const testing::ParkingDriveLog parking = testing::write_parking_drive(dir, std::nullopt);
   const sim::Scenario truth = sim::make_scenario("parking_drive");
-  const std::string config_path = (dir / "parking.yaml").string();
-  std::ofstream(config_path) << "device: generic\nplatform: land\n"
-                                "imu:\n  mounting_rpy_deg: [180, 0, -90]\n  gyro_arw_deg_rthr: 0.15\n"
-                                "  gyro_bias_instability_deg_hr: 2\n  accel_vrw_mps_rthr: 0.03\n"
-                                "  accel_bias_instability_mps2: 3.5e-5\n  initial_gyro_bias_std_deg_hr: 50\n"
-                                "  initial_accel_bias_std_mps2: 0.02\n"
-                                "gnss:\n  lever_arm_m: [0.15, -0.30, -0.20]\n";
   auto offset_error_ms = [&](int rounds, double* std_ms) {
     ReplayOptions o;
-    o.config_path = config_path;
-    o.inputs = {sim.out_path};
+    o.config_path = parking.config_path;
+    o.inputs = {parking.log_path};
     o.smooth = true;
     o.calibration_out = (dir / "calib.yaml").string();
     o.calibration_rounds = rounds;
