@@ -165,42 +165,28 @@ std::deque<Interval> backward_pass(ForwardRecorder& rec, SmootherStats& stats, c
           segment_open = false;
           continue;
         }
-        if (have == Have::kPrior && prior.time_ns == start.time_ns &&
-            std::binary_search(after_outage.begin(), after_outage.end(), i)) {
-          Interval iv;
-          iv.start_record = i;
-          iv.end_record = prior_record;
-          iv.start_ns = start.time_ns;
-          iv.end_ns = prior.time_ns;
-          iv.d_start = e_end;
-          iv.d_end = e_end;
-          xs = start.x;
-          inject_error(xs, iv.d_start);
-          ps = ps_end;
-          iv.p_start = Blocks::of(ps);
-          iv.p_end = iv.p_start;
-          out.push_front(iv);
-          ++stats.intervals;
-          if (!segment_open) ++stats.segments;
-          segment_open = true;
-          have = Have::kSmoothed;
-          continue;
-        }
         if (have == Have::kPrior) {
-          if (rts_gain(start, prior, gain)) {
+          const bool pass_through =
+              prior.time_ns == start.time_ns && std::binary_search(after_outage.begin(), after_outage.end(), i);
+          if (pass_through || rts_gain(start, prior, gain)) {
             const int n = prior.n;
             Interval iv;
             iv.start_record = i;
             iv.end_record = prior_record;
             iv.start_ns = start.time_ns;
             iv.end_ns = prior.time_ns;
-            iv.d_start.head(n) = gain * e_end.head(n);
+            if (pass_through) {
+              iv.d_start = e_end;
+              ps = ps_end;
+            } else {
+              iv.d_start.head(n) = gain * e_end.head(n);
+              ps = start.p;
+              ps.topLeftCorner(n, n) += gain * (ps_end - prior.p).topLeftCorner(n, n) * gain.transpose();
+              ps = (0.5 * (ps + ps.transpose())).eval();
+            }
             iv.d_end = e_end;
             xs = start.x;
             inject_error(xs, iv.d_start);
-            ps = start.p;
-            ps.topLeftCorner(n, n) += gain * (ps_end - prior.p).topLeftCorner(n, n) * gain.transpose();
-            ps = (0.5 * (ps + ps.transpose())).eval();
             iv.p_start = Blocks::of(ps);
             iv.p_end = Blocks::of(ps_end);
             out.push_front(iv);
