@@ -1,8 +1,8 @@
 #include "filter/smoother/rts_smoother.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <deque>
-#include <optional>
 #include <vector>
 
 #include <Eigen/Cholesky>
@@ -84,18 +84,18 @@ bool observes_position(const ForwardRecordEntry& update) {
 std::vector<std::size_t> inflations_after_outages(ForwardRecorder& rec) {
   std::vector<std::size_t> out;
   ForwardRecordEntry e;
-  std::optional<std::int64_t> last_fix_ns;
+  std::int64_t last_fix_ns = INT64_MIN;  // none since the start or the last restart
   const std::size_t total = rec.size();
   for (std::size_t i = 0; i < total; ++i) {
     const RecordType t = rec.type(i);
     if (t == RecordType::kRestart || t == RecordType::kBreak) {
-      last_fix_ns.reset();
+      last_fix_ns = INT64_MIN;
     } else if (t == RecordType::kUpdate) {
       if (!rec.read(i, e)) break;
       if (observes_position(e)) last_fix_ns = e.time_ns;
     } else if (t == RecordType::kIntervalStart && i + 1 < total && rec.type(i + 1) == RecordType::kPropagation) {
       if (!rec.read(i, e)) break;
-      if (last_fix_ns && e.time_ns - *last_fix_ns > kOutageGapNs) out.push_back(i);
+      if (last_fix_ns != INT64_MIN && e.time_ns - last_fix_ns > kOutageGapNs) out.push_back(i);
     }
   }
   return out;
