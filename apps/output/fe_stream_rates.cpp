@@ -27,11 +27,31 @@ frontends::fusionengine::MessageRate FeStreamRates::rate(MessageType type) const
   return MessageRate::kOff;
 }
 
-bool FeStreamRates::set(std::uint16_t message_id, MessageRate rate, bool include_disabled) {
-  const auto apply = [rate](Entry& e) {
-    e.rate = rate;
-    const double p = frontends::fusionengine::interval_s(rate);
-    e.interval = OutputRate(p > 0 ? 1.0 / p : 0.0);
+void FeStreamRates::assign(Entry& e, MessageRate rate) {
+  e.rate = rate;
+  const double p = frontends::fusionengine::interval_s(rate);
+  e.interval = OutputRate(p > 0 ? 1.0 / p : 0.0);
+}
+
+void FeStreamRates::save() {
+  for (Entry& e : entries_) e.saved = e.rate;
+}
+
+void FeStreamRates::revert_to_saved() {
+  for (Entry& e : entries_) assign(e, e.saved);
+}
+
+void FeStreamRates::revert_to_default() {
+  for (Entry& e : entries_) {
+    e.saved = MessageRate::kDefault;
+    assign(e, MessageRate::kDefault);
+  }
+}
+
+bool FeStreamRates::set(std::uint16_t message_id, MessageRate rate, bool include_disabled, bool and_save) {
+  const auto apply = [rate, and_save](Entry& e) {
+    assign(e, rate);
+    if (and_save) e.saved = rate;
   };
   if (message_id == frontends::fusionengine::kAllMessages) {
     const bool interval = frontends::fusionengine::interval_s(rate) > 0;

@@ -122,9 +122,9 @@ void FeDeviceEmulator::handle(const fe::Frame& frame, std::vector<std::uint8_t>&
       if ((protocol != fe::ProtocolType::kFusionEngine && protocol != fe::ProtocolType::kAll) || !fe::valid_rate(m.rate)) {
         return answer(fe::Response::kValueError);
       }
-      // One table, the stream's: there is no saved copy, so APPLY_AND_SAVE applies only.
       const bool ok = encoder_.rates().set(m.message_id, static_cast<MessageRate>(m.rate),
-                                           (m.flags & fe::kRateFlagIncludeDisabled) != 0);
+                                           (m.flags & fe::kRateFlagIncludeDisabled) != 0,
+                                           (m.flags & fe::kRateFlagApplyAndSave) != 0);
       return answer(ok ? fe::Response::kOk : fe::Response::kUnsupportedFeature);
     }
     case MessageType::kGetMessageRate: {
@@ -133,16 +133,27 @@ void FeDeviceEmulator::handle(const fe::Frame& frame, std::vector<std::uint8_t>&
       fe::MessageRateResponseMessage r;
       r.source = m.source;
       r.output_interface = m.output_interface;
+      const auto source = static_cast<fe::ConfigSource>(m.source);
+      const bool known_source = source == fe::ConfigSource::kActive || source == fe::ConfigSource::kSaved ||
+                                source == fe::ConfigSource::kDefault;
       for (const auto& e : encoder_.rates().entries()) {
+        if (!known_source) break;
         if (m.message_id != fe::kAllMessages && m.message_id != fe::to_u16(e.type)) continue;
         fe::MessageRateEntry entry;
         entry.protocol = static_cast<std::uint8_t>(fe::ProtocolType::kFusionEngine);
+        entry.flags = e.rate != e.saved ? fe::kRateEntryActiveDiffersFromSaved : 0;
         entry.message_id = fe::to_u16(e.type);
-        entry.configured_rate = static_cast<std::uint8_t>(e.rate);
+        const MessageRate configured = source == fe::ConfigSource::kActive  ? e.rate
+                                       : source == fe::ConfigSource::kSaved ? e.saved
+                                                                            : MessageRate::kDefault;
+        entry.configured_rate = static_cast<std::uint8_t>(configured);
+        // The rate the stream uses now, whichever copy was asked for (L1679).
         entry.effective_rate = static_cast<std::uint8_t>(e.rate);
         r.rates.push_back(entry);
       }
-      r.response = static_cast<std::uint8_t>(r.rates.empty() ? fe::Response::kUnsupportedFeature : fe::Response::kOk);
+      r.response = static_cast<std::uint8_t>(!known_source     ? fe::Response::kValueError
+                                             : r.rates.empty() ? fe::Response::kUnsupportedFeature
+                                                               : fe::Response::kOk);
       encoder_.writer().append(std::move(r), reply);
       return;
     }
@@ -175,22 +186,26 @@ void FeDeviceEmulator::handle(const fe::Frame& frame, std::vector<std::uint8_t>&
         pending_events_.push_back(FeDeviceStatus::event(fe::EventType::kReset, m.reset_mask,
                                                         "ResetRequest from a client", monotonic_ns()));
       }
-      return answer(fe::Response::kOk);
+      // RESET_CONFIG restores the factory configuration, rates included: the device control
+      // answers and resets the settings, the stream's rate table is reset here.
+      if ((m.reset_mask & fe::reset::kResetConfig) != 0) encoder_.rates().revert_to_default();
+      return configure(frame, reply, effects);
+    }
+    case MessageType::kSaveConfig: {
+      // The rates are part of "the active configuration" SaveConfig saves or reverts (L1336-1377).
+      fe::SaveConfigMessage m;
+      if (parse(frame, m)) {
+        switch (static_cast<fe::SaveAction>(m.action)) {
+          case fe::SaveAction::kSave: encoder_.rates().save(); break;
+          case fe::SaveAction::kRevertToSaved: encoder_.rates().revert_to_saved(); break;
+          case fe::SaveAction::kRevertToDefault: encoder_.rates().revert_to_default(); break;
+          default: break;  // the device control answers Value Error
+        }
+      }
+      return configure(frame, reply, effects);
     }
     case MessageType::kSetConfig:
-    case MessageType::kGetConfig:
-    case MessageType::kSaveConfig: {
-      const config::Config before = control_.config();
-      const std::uint64_t changes = control_.config_changes();
-      control_.respond(frame, encoder_.writer(), reply);
-      config_changes_to_actions(before, control_.config(), effects);
-      inputs_.set_wheel_config(control_.wheel_config());
-      if (control_.config_changes() != changes) {
-        pending_events_.push_back(FeDeviceStatus::event(fe::EventType::kConfigChange, 0,
-                                                        "configuration changed by a client", monotonic_ns()));
-      }
-      return;
-    }
+    case MessageType::kGetConfig: return configure(frame, reply, effects);
     case MessageType::kShutdownRequest:
     case MessageType::kStartupRequest:
     case MessageType::kFaultControl:
@@ -213,6 +228,18 @@ void FeDeviceEmulator::handle(const fe::Frame& frame, std::vector<std::uint8_t>&
         }
       }
       return;
+  }
+}
+
+void FeDeviceEmulator::configure(const fe::Frame& frame, std::vector<std::uint8_t>& reply, CommandEffects& effects) {
+  const config::Config before = control_.config();
+  const std::uint64_t changes = control_.config_changes();
+  control_.respond(frame, encoder_.writer(), reply);
+  config_changes_to_actions(before, control_.config(), effects);
+  inputs_.set_wheel_config(control_.wheel_config());
+  if (control_.config_changes() != changes) {
+    pending_events_.push_back(FeDeviceStatus::event(fe::EventType::kConfigChange, 0,
+                                                    "configuration changed by a client", monotonic_ns()));
   }
 }
 

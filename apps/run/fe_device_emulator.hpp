@@ -37,6 +37,9 @@ class FeDeviceEmulator final : public DeviceEmulator {
 
  private:
   void handle(const frontends::fusionengine::Frame& frame, std::vector<std::uint8_t>& reply, CommandEffects& effects);
+  // A command the device control answers (configuration, save/revert, reset); what it changed
+  // in the config becomes engine actions and a CONFIG_CHANGE event.
+  void configure(const frontends::fusionengine::Frame& frame, std::vector<std::uint8_t>& reply, CommandEffects& effects);
   frontends::fusionengine::Framer& framer_for(io::PeerId peer);
   // Queues a RESET event for each restart the filter made on its own since the last epoch.
   void announce_restarts(const OutputEpoch& epoch);

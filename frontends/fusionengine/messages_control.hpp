@@ -324,6 +324,8 @@ constexpr bool valid_rate(std::uint8_t r) { return r <= static_cast<std::uint8_t
 inline constexpr std::uint16_t kAllMessages = 0xFFFF;
 inline constexpr std::uint8_t kRateFlagApplyAndSave = 0x01;
 inline constexpr std::uint8_t kRateFlagIncludeDisabled = 0x02;  // four spellings, digest §13 B11
+// MessageRateResponse entry flags (spec L1683-1685).
+inline constexpr std::uint8_t kRateEntryActiveDiffersFromSaved = 0x01;
 
 struct SetMessageRateMessage {
   static constexpr MessageType kType = MessageType::kSetMessageRate;
