@@ -207,57 +207,6 @@ bool calibration_settled(const config::Config& before, const config::Config& aft
          !moved(before.imu.mounting_rpy_deg, after.imu.mounting_rpy_deg, 0.05);
 }
 
-ReplayResult replay_with(const ReplayOptions& options, const std::vector<InputSpec>& specs,
-                         const std::optional<Recording>& recording, const config::Config& config,
-                         std::optional<calib::CalibrationResult>& calibration);
-
-}  // namespace
-
-config::Config replay_config(const std::string& config_path, std::string_view first_format) {
-  if (config_path.empty()) return config::defaults_for(profile_for_format(first_format));
-  try {
-    return config::load_from_file(config_path);
-  } catch (const config::ConfigError& e) {
-    throw CommandError(e.what());
-  }
-}
-
-ReplayResult run_replay(const ReplayOptions& options) {
-  const bool recorded = !options.recording_dir.empty();
-  if (recorded && !options.inputs.empty()) throw CommandError("replay: give INPUT files or --recording DIR, not both");
-  if (!recorded && options.inputs.empty()) throw CommandError("replay needs at least one INPUT (or --recording DIR)");
-  std::optional<Recording> recording;
-  std::vector<InputSpec> specs;
-  if (recorded) {
-    recording = read_recording(options.recording_dir);
-  } else {
-    specs = resolve_inputs(options.inputs, options.gps_week);
-  }
-  config::Config config =
-      recorded ? replay_config(options.config_path.empty() ? recording->config_path : options.config_path, "")
-               : replay_config(options.config_path, specs.front().frontend->format);
-  if (options.calibration_rounds < 1) throw CommandError("--calibration-rounds must be at least 1");
-  std::optional<calib::CalibrationResult> calibration;
-  ReplayResult result = replay_with(options, specs, recording, config, calibration);
-  int rounds = calibration ? 1 : 0;
-  while (calibration && rounds < options.calibration_rounds) {
-    const config::Config next = calibrated_config(config, *calibration);
-    if (calibration_settled(config, next)) break;
-    config = next;
-    result = replay_with(options, specs, recording, config, calibration);
-    ++rounds;
-  }
-  if (calibration) {
-    result.calibration_rounds = rounds;
-    result.summary.extra["batch_calibration"]["rounds"] = rounds;
-    result.calibration_text += "  " + std::to_string(rounds) + " round(s) of smoothing and calibration, each with the " +
-                               "previous round's calibrated installation\n";
-  }
-  return result;
-}
-
-namespace {
-
 // One run over the inputs with `config`: the fusion, the smoother and the calibration when asked
 // (`calibration` set to its result).
 ReplayResult replay_with(const ReplayOptions& options, const std::vector<InputSpec>& specs,
@@ -365,5 +314,50 @@ ReplayResult replay_with(const ReplayOptions& options, const std::vector<InputSp
 }
 
 }  // namespace
+
+config::Config replay_config(const std::string& config_path, std::string_view first_format) {
+  if (config_path.empty()) return config::defaults_for(profile_for_format(first_format));
+  try {
+    return config::load_from_file(config_path);
+  } catch (const config::ConfigError& e) {
+    throw CommandError(e.what());
+  }
+}
+
+ReplayResult run_replay(const ReplayOptions& options) {
+  const bool recorded = !options.recording_dir.empty();
+  if (recorded && !options.inputs.empty()) throw CommandError("replay: give INPUT files or --recording DIR, not both");
+  if (!recorded && options.inputs.empty()) throw CommandError("replay needs at least one INPUT (or --recording DIR)");
+  std::optional<Recording> recording;
+  std::vector<InputSpec> specs;
+  if (recorded) {
+    recording = read_recording(options.recording_dir);
+  } else {
+    specs = resolve_inputs(options.inputs, options.gps_week);
+  }
+  config::Config config =
+      recorded ? replay_config(options.config_path.empty() ? recording->config_path : options.config_path, "")
+               : replay_config(options.config_path, specs.front().frontend->format);
+  if (options.calibration_rounds < 1) throw CommandError("--calibration-rounds must be at least 1");
+  std::optional<calib::CalibrationResult> calibration;
+  ReplayResult result = replay_with(options, specs, recording, config, calibration);
+  int rounds = calibration ? 1 : 0;
+  while (calibration && rounds < options.calibration_rounds) {
+    const config::Config next = calibrated_config(config, *calibration);
+    if (calibration_settled(config, next)) break;
+    config = next;
+    result = replay_with(options, specs, recording, config, calibration);
+    ++rounds;
+  }
+  if (calibration) {
+    result.calibration_rounds = rounds;
+    result.summary.extra["batch_calibration"]["rounds"] = rounds;
+    result.calibration_text += rounds == 1 ? std::string("  1 round of smoothing and calibration\n")
+                                           : "  " + std::to_string(rounds) +
+                                                 " rounds of smoothing and calibration, each after the first with the "
+                                                 "previous round's calibrated installation\n";
+  }
+  return result;
+}
 
 }  // namespace navfuse::apps
