@@ -126,10 +126,15 @@ thread_local std::vector<unsigned char> scratch;
 void emit(FilterCore& c, RecordType type) { c.record.sink->write(c.record.next_index++, type, scratch); }
 
 // kIntervalStart / kClose: the state and covariance `p` a covariance step starts from.
-void put_node(Out& out, const FilterCore& c, const Covariance& p) {
+// kIntervalStart / kClose: the node's flags byte.
+constexpr std::uint8_t kNodeNavigating = 0x01;
+constexpr std::uint8_t kNodeInflationAfterOutage = 0x02;
+
+void put_node(Out& out, const FilterCore& c, const Covariance& p, bool inflation_after_outage = false) {
   out.put(c.x.time_ns);
   out.put(static_cast<std::int32_t>(c.ekf.n));
-  out.put(static_cast<std::uint8_t>(c.navigating() ? 1 : 0));
+  out.put(static_cast<std::uint8_t>((c.navigating() ? kNodeNavigating : 0) |
+                                    (inflation_after_outage ? kNodeInflationAfterOutage : 0)));
   out.put(c.x);
   out.put_symmetric(p, c.ekf.n);
 }
@@ -226,7 +231,11 @@ bool ForwardRecorder::read(std::size_t i, ForwardRecordEntry& e) {
     case RecordType::kClose:
       e.time_ns = in.get<std::int64_t>();
       e.n = in.get<std::int32_t>();
-      e.navigating = in.get<std::uint8_t>() != 0;
+      {
+        const auto flags = in.get<std::uint8_t>();
+        e.navigating = (flags & kNodeNavigating) != 0;
+        e.inflation_after_outage = (flags & kNodeInflationAfterOutage) != 0;
+      }
       e.x = in.state();
       in.symmetric(e.p, e.n);
       break;
@@ -323,9 +332,10 @@ void record_propagation(FilterCore& c) {
   emit(c, RecordType::kPropagation);
 }
 
-void record_covariance_change(FilterCore& c, const Covariance& before, const SystemRows& phi_rows) {
+void record_covariance_change(FilterCore& c, const Covariance& before, const SystemRows& phi_rows,
+                              bool after_outage) {
   Out start(scratch);
-  put_node(start, c, before);
+  put_node(start, c, before, after_outage);
   emit(c, RecordType::kIntervalStart);
   Out prior(scratch);
   put_prior(prior, c, phi_rows);

@@ -12,8 +12,9 @@
 //                   the step (process_model.hpp; formed here, only when recording) and the
 //                   propagated P- (the smoother's prior).
 //                   A covariance transformed outside an update (re-inflation) is written as a
-//                   zero-length step: kIntervalStart with P before the change, kPropagation with
-//                   the same state, the transformation as Phi and P after it. Left inside a node
+//                   zero-length step: kIntervalStart with P before the change (and whether the
+//                   filter was dead reckoning then), kPropagation with the same state, the
+//                   transformation as Phi and P after it. Left inside a node
 //                   (between its kPropagation and the next kIntervalStart), the smoother would
 //                   take the wider posterior for an update's and its gain would use the narrower
 //                   prior: on a wrong installation that carried back corrections of metres.
@@ -71,6 +72,9 @@ struct ForwardRecordEntry {
   Covariance p = Covariance::Zero();    // interval start, propagation (P-), close
   Covariance phi = Covariance::Identity();  // propagation
   bool navigating = false;         // interval start, close: levelled, heading and position known
+  // interval start of a covariance change: a re-inflation while the filter was dead reckoning
+  // (no absolute position for longer than gnss_timeout_s: the fixes ending an outage were gated)
+  bool inflation_after_outage = false;
   // kImu
   Eigen::Vector3d rate_b_rps = Eigen::Vector3d::Zero();
   Eigen::Vector3d force_b_mps2 = Eigen::Vector3d::Zero();
@@ -134,7 +138,10 @@ void record_propagation(FilterCore& core);
 // After the covariance was transformed outside an update and a propagation, P = Phi before Phi^T
 // with the state unchanged (re-inflation, innovation_adaptation.cpp): a zero-length step whose
 // transition is `phi_rows` (the rows with dynamics; identity below them) and no process noise.
-void record_covariance_change(FilterCore& core, const Covariance& before, const SystemRows& phi_rows);
+// `after_outage`: the filter was dead reckoning when it re-inflated (the smoother's gain through
+// such a change is I, rts_smoother.hpp).
+void record_covariance_change(FilterCore& core, const Covariance& before, const SystemRows& phi_rows,
+                              bool after_outage);
 // After an accepted update that moved the state from `before`.
 void record_update(FilterCore& core, const NavState& before, const Observation& obs, const UpdateResult& r);
 // Before the filter restarts.

@@ -70,37 +70,6 @@ bool rts_gain(const ForwardRecordEntry& start, const ForwardRecordEntry& prior, 
   return true;
 }
 
-// A re-inflation after this long without a position-observing update is one after a GNSS outage
-// (longer than the interval of any receiver at 1 Hz or more; backward_pass).
-constexpr std::int64_t kOutageGapNs = 1'500'000'000;
-
-bool observes_position(const ForwardRecordEntry& update) {
-  const int rows = update.obs.rows();
-  return rows > 0 && update.obs.h.block(0, sx::kPos, rows, 3).cwiseAbs().maxCoeff() > 0.0;
-}
-
-// Forward over the record's types (in memory), reading only updates and re-inflations: the
-// kIntervalStart records of the re-inflations that come after an outage, in order.
-std::vector<std::size_t> inflations_after_outages(ForwardRecorder& rec) {
-  std::vector<std::size_t> out;
-  ForwardRecordEntry e;
-  std::int64_t last_fix_ns = INT64_MIN;  // none since the start or the last restart
-  const std::size_t total = rec.size();
-  for (std::size_t i = 0; i < total; ++i) {
-    const RecordType t = rec.type(i);
-    if (t == RecordType::kRestart || t == RecordType::kBreak) {
-      last_fix_ns = INT64_MIN;
-    } else if (t == RecordType::kUpdate) {
-      if (!rec.read(i, e)) break;
-      if (observes_position(e)) last_fix_ns = e.time_ns;
-    } else if (t == RecordType::kIntervalStart && i + 1 < total && rec.type(i + 1) == RecordType::kPropagation) {
-      if (!rec.read(i, e)) break;
-      if (last_fix_ns != INT64_MIN && e.time_ns - last_fix_ns > kOutageGapNs) out.push_back(i);
-    }
-  }
-  return out;
-}
-
 // The backward pass: smoothed corrections per interval, in time order (a deque, filled from the
 // front: no reallocation doubling the peak memory of a long log).
 std::deque<Interval> backward_pass(ForwardRecorder& rec, SmootherStats& stats, const std::function<void(double)>& progress) {
@@ -125,7 +94,6 @@ std::deque<Interval> backward_pass(ForwardRecorder& rec, SmootherStats& stats, c
   // the forward filter had to 4 cm (SmootherScenario.NoWorseThanForwardOnAWrongInstallation).
   // Carrying D back over the whole outage as a covariance scale instead made the outage worse
   // (2.1 m RMS on parking_drive): the NHC updates inside it meet a P they never saw.
-  const std::vector<std::size_t> after_outage = inflations_after_outages(rec);
   const std::size_t total = rec.size();
   for (std::size_t i = total; i-- > 0;) {
     if (progress && (i & 0xFFFF) == 0) progress(0.5 * static_cast<double>(total - i) / static_cast<double>(total));
@@ -166,8 +134,7 @@ std::deque<Interval> backward_pass(ForwardRecorder& rec, SmootherStats& stats, c
           continue;
         }
         if (have == Have::kPrior) {
-          const bool pass_through =
-              prior.time_ns == start.time_ns && std::binary_search(after_outage.begin(), after_outage.end(), i);
+          const bool pass_through = prior.time_ns == start.time_ns && start.inflation_after_outage;
           if (pass_through || rts_gain(start, prior, gain)) {
             const int n = prior.n;
             Interval iv;

@@ -20,8 +20,8 @@
 // A covariance re-inflation is recorded as a zero-length interval with Phi = D (forward_record.hpp)
 // and no noise: a node like any other, whose gain P+ D (D P+ D)^-1 = D^-1 shrinks the position
 // and velocity correction carried back through it by the inflation factor, while fixes arrive
-// (there a jump is the installation's). One that comes after a GNSS outage (no position-observing
-// update for kOutageGapNs, rts_smoother.cpp) passes the correction unchanged (gain I): the fix
+// (there a jump is the installation's). One the filter made while dead reckoning (recorded as
+// after an outage, innovation_adaptation.cpp) passes the correction unchanged (gain I): the fix
 // that ended the outage then corrects the outage's end.
 //
 // Restarts and breaks (forward_record.hpp) end a segment: each is smoothed on its own, and its
