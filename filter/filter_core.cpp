@@ -77,6 +77,20 @@ void FilterCore::restart(const FilterOptions& o) {
   update_mode(*this, o);
 }
 
+namespace {
+// The GNSS time offset is seen only in manoeuvres (on a straight, v dt is a position error), and
+// the first ones come while the heading, velocity and position still carry what the alignment
+// took from fixes stamped dt off. Its variance collapses there to a few milliseconds around a
+// value far from the truth, and at its random walk of 1 ms / sqrt(h) (process_model.cpp) the
+// state then crept towards the truth at ~0.02 ms/s: on parking_drive (IMU 125 ms late, land
+// platform, data-sheet noise, offset estimated from the default prior) it ended the 9 minutes at
+// 49-68 ms in three draws. For the first two minutes of navigation it walks at 3 ms / sqrt(s),
+// enough for the turns of those minutes to carry it to the truth (114-124 ms; after them it is
+// as precise as before: tests/filter/gnss_time_offset_scenario_test.cpp).
+constexpr double kOffsetSettle_s = 120.0;
+constexpr double kOffsetSettleRw_s = 3e-3;  // s / sqrt(s)
+}  // namespace
+
 bool FilterCore::propagate(const FilterOptions& o, const ImuIncrement& raw) {
   if (!mode.levelled) {
     x.time_ns = raw.time_ns;
@@ -100,6 +114,16 @@ bool FilterCore::propagate(const FilterOptions& o, const ImuIncrement& raw) {
   const std::int64_t previous_ns = x.time_ns;
   if (record.sink != nullptr) record_step_start(*this);
   strapdown_step(x, memory, comp, earth);
+  if (o.states.gnss_time_offset) {
+    // One sample's acceleration carries the whole vibration (on parking_drive the engine's tone
+    // alone is 0.5 m/s^2 against manoeuvres of 1-3 m/s^2): as the regressor of the offset in the
+    // GNSS models it is an error in the variables, which pulls the estimate towards zero. 50 ms
+    // averages the vibration out and lags a 3 s car-park turn by little (a walker's 2 Hz steps by
+    // a third of their swing: the walk's estimate stays within 7 ms of zero, README).
+    constexpr double kOffsetAccelTau_s = 0.05;
+    const Eigen::Vector3d a = x.q_nb * force_b_mps2 + earth.gravity_ned_mps2;
+    accel_lp_ned_mps2 += (1.0 - std::exp(-comp.dt_s / kOffsetAccelTau_s)) * (a - accel_lp_ned_mps2);
+  }
   if (!mode.heading_known) accumulate_velocity_match(velocity_match, x.q_nb.toRotationMatrix(), comp.dvel_mps);
   step.add(comp);
   if (record.sink != nullptr) record_imu(*this, o);
@@ -117,15 +141,18 @@ void FilterCore::apply_constraints(const FilterOptions& o, const ImuIncrement& r
   check_divergence(o);
 }
 
-void FilterCore::flush_covariance(const FilterOptions& /*o*/) {
+void FilterCore::flush_covariance(const FilterOptions& o) {
   if (step.dt_s <= 0.0) return;
-  if (adaptation.process_noise_scale == 1.0) {
+  const bool offset_settling = o.states.gnss_time_offset && mode.navigating_since_ns != INT64_MIN &&
+                               seconds_since(x.time_ns, mode.navigating_since_ns) < kOffsetSettle_s;
+  if (adaptation.process_noise_scale == 1.0 && !offset_settling) {
     propagate_covariance(ekf.p, ekf.n, x, earth, step, noise_density);
   } else {
     // Vibration and unmodelled errors show up as extra velocity and attitude random walk.
     StateVector q = noise_density;
     q.segment<3>(sx::kVel) *= adaptation.process_noise_scale;
     q.segment<3>(sx::kAtt) *= adaptation.process_noise_scale;
+    if (offset_settling) q(sx::kGnssTimeOffset) = kOffsetSettleRw_s * kOffsetSettleRw_s;
     propagate_covariance(ekf.p, ekf.n, x, earth, step, q);
   }
   // Vertical-gyro mode (MIP §6.2): the heading is relative, not estimated. Estimating it through

@@ -152,6 +152,7 @@ struct ModeState {
   bool diverged = false;  // set by a divergence restart, cleared on reaching Navigation
   std::int64_t last_absolute_position_ns = INT64_MIN;
   std::int64_t last_imu_fault_ns = INT64_MIN;
+  std::int64_t navigating_since_ns = INT64_MIN;  // start of the current navigating stretch
   // Event counters (kept across restarts; the Engine reports them in FilterStats).
   std::uint64_t restarts = 0;
   std::uint64_t divergences = 0;  // of restarts: those check_divergence() made
@@ -171,6 +172,9 @@ struct FilterCore {
   StateVector variance_floor = StateVector::Zero();
   Eigen::Vector3d rate_b_rps = Eigen::Vector3d::Zero();    // compensated, newest sample
   Eigen::Vector3d force_b_mps2 = Eigen::Vector3d::Zero();  // compensated, newest sample
+  // The NED acceleration low-passed (kOffsetAccelTau_s), kept while the GNSS time offset is
+  // estimated: the regressor of the offset in the GNSS velocity model (fix = v + a dt).
+  Eigen::Vector3d accel_lp_ned_mps2 = Eigen::Vector3d::Zero();
 
   Leveller leveller;
   VelocityMatchWindow velocity_match;
@@ -199,7 +203,7 @@ struct FilterCore {
   FuseResult apply(const FilterOptions& o, const Observation& obs, double gate);
   StateView view(double shift_s) const {
     StateView v(x, earth, rate_b_rps, shift_s);
-    v.accel_ned_mps2 = v.c_nb * force_b_mps2 + earth.gravity_ned_mps2;
+    v.accel_ned_mps2 = accel_lp_ned_mps2;
     return v;
   }
   // NaN, or a covariance that no longer means anything: restart and flag it.

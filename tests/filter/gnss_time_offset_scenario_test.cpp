@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "apps/sim/reality_scenarios.hpp"
 #include "tests/filter/scenario_harness.hpp"
 
 namespace navfuse::filter {
@@ -33,7 +34,7 @@ struct OffsetRun {
   std::uint64_t fixes_used = 0, fixes_rejected = 0;
 };
 
-OffsetRun run(const sim::Scenario& s, const FilterOptions& o) {
+OffsetRun run(const sim::Scenario& s, const FilterOptions& o, double score_from_s = 330.0) {
   OffsetRun r;
   const auto gnss_and_imu_only = [](Measurement& m) { return kind_of(m) != MeasurementKind::kVehicleSpeed; };
   const test::RunSummary summary = test::run_scenario(
@@ -42,7 +43,7 @@ OffsetRun run(const sim::Scenario& s, const FilterOptions& o) {
         const NavSolution& sol = e.engine->solution();
         r.offset_s = sol.calibration.gnss_time_offset_s.value;
         r.offset_std_s = sol.calibration.gnss_time_offset_s.std;
-        if (e.t_s >= 330.0 && sol.mode == NavMode::kNavigation) r.horizontal.add(e.horizontal_m());
+        if (e.t_s >= score_from_s && sol.mode == NavMode::kNavigation) r.horizontal.add(e.horizontal_m());
       },
       gnss_and_imu_only);
   const auto& gnss = summary.stats.of(MeasurementKind::kGnssPosition);
@@ -91,6 +92,33 @@ TEST(GnssTimeOffsetScenario, OnADriveWithoutOffsetTheStateStaysAtZero) {
   print("no offset", r);
   EXPECT_LT(std::abs(r.offset_s), 0.002);
   EXPECT_LE(r.horizontal.value(), 0.02);
+}
+
+// The held-out car drive's rig as its user would leave it when the IMU's latency is not known:
+// parking_drive (IMU 125 ms late, tight car-park turns, vibration), land platform, the data
+// sheet, the offset not configured but estimated from the default prior (50 ms). The offset is
+// seen only in manoeuvres; the first ones come while the heading and velocity still settle from
+// the alignment. Before the state's two-minute settling walk and the low-passed acceleration in
+// its models (filter_core.cpp, gnss_position.cpp), the state kept what it took there: 31-63 ms
+// +- 0.3 in these three draws, 0.44-0.66 m horizontal RMS. Now within 15 ms (114-115 ms when
+// written; the std claims far less than that error, see README) and under 10 cm.
+TEST(GnssTimeOffsetScenario, AnUnknownLatencyOfTheParkingDrivesImuIsFoundFromTheDefaultPrior) {
+  for (const std::uint64_t seed : {27u, 29u, 31u}) {
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    sim::Scenario s = sim::parking_drive();
+    s.seed = seed;
+    FilterOptions o = test::options_for(s);
+    o.land_vehicle = true;
+    o.course_alignment = true;
+    o.imu_time_offset_s = 0.0;  // not known
+    o.states.gnss_time_offset = true;
+    const OffsetRun r = run(s, o, 180.0);
+    print("parking drive, offset estimated", r);
+    // IMU stamps 125 ms late: seen from the IMU's clock, a fix stamped t is the antenna at t + 125 ms.
+    EXPECT_NEAR(r.offset_s, -sim::kParkingImuTimeOffset_s, 0.015);
+    EXPECT_GT(r.horizontal.n, 30000u);
+    EXPECT_LE(r.horizontal.value(), 0.1);
+  }
 }
 
 }  // namespace
