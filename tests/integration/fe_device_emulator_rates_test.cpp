@@ -14,9 +14,6 @@
 namespace navfuse::apps {
 namespace {
 
-using testing::epoch_at;
-using testing::parse_reply;
-using testing::Reply;
 namespace fe = frontends::fusionengine;
 
 // The link's one rate table (apps/output/fe_stream_rates.hpp): spec example E11 (L1490-1497)

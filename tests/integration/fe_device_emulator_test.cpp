@@ -26,9 +26,6 @@
 namespace navfuse::apps {
 namespace {
 
-using testing::epoch_at;
-using testing::parse_reply;
-using testing::Reply;
 namespace fe = frontends::fusionengine;
 
 TEST(FeDeviceEmulator, SetConfigLeverArmBecomesAnEngineActionAndGetConfigReportsIt) {

@@ -57,3 +57,10 @@ inline OutputEpoch epoch_at(int k) {
 }
 
 }  // namespace navfuse::apps::testing
+
+namespace navfuse::apps {
+// The link tests' own names for these (test-only header).
+using testing::epoch_at;
+using testing::parse_reply;
+using testing::Reply;
+}  // namespace navfuse::apps
