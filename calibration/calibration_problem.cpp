@@ -163,14 +163,14 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
     used_fixes.push_back({e, pos_t, tau});
   }
   result.gnss_position_residuals = used_fixes.size();
-  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<VectorPrior, 3, 3>(
-                               new VectorPrior(log.setup.gnss_lever_arm_m, options.lever_arm_prior_std_m)),
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<VectorPrior<3>, 3, 3>(
+                               new VectorPrior<3>(log.setup.gnss_lever_arm_m, options.lever_arm_prior_std_m)),
                            nullptr, g.lever);
-  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<VectorPrior, 3, 3>(
-                               new VectorPrior(Eigen::Vector3d::Zero(), setup.gyro_scale_std)),
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<VectorPrior<3>, 3, 3>(
+                               new VectorPrior<3>(Eigen::Vector3d::Zero(), setup.gyro_scale_std)),
                            nullptr, g.sg);
-  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<VectorPrior, 3, 3>(
-                               new VectorPrior(Eigen::Vector3d::Zero(), setup.accel_scale_std)),
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<VectorPrior<3>, 3, 3>(
+                               new VectorPrior<3>(Eigen::Vector3d::Zero(), setup.accel_scale_std)),
                            nullptr, g.sa);
   for (const GnssVelocity& vel : log.velocities) {
     if ((vel.header.valid & GnssVelocity::kValidVelocity) == 0 || vel.receiver_id != 0) continue;
@@ -216,7 +216,14 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
   }
   result.mounting_estimated = result.speed_residuals + result.nhc_residuals > 0;
   result.mounting_is_residual = setup.imu_in_vehicle_frame;
-  if (!result.mounting_estimated) problem.SetParameterBlockConstant(g.mount);
+  if (!result.mounting_estimated) {
+    problem.SetParameterBlockConstant(g.mount);
+  } else {
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<VectorPrior<2>, 2, 2>(new VectorPrior<2>(
+                                 Eigen::Vector2d(setup.mounting_rpy_rad.y(), setup.mounting_rpy_rad.z()),
+                                 options.mounting_prior_std_rad)),
+                             nullptr, g.mount);
+  }
 
   ceres::Solver::Options solver;
   solver.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;

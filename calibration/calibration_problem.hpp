@@ -27,7 +27,12 @@ struct CalibrationOptions {
   double max_imu_gap_s = 1.0;
   int max_iterations = 50;
   double huber_sigmas = 2.0;  // whitened residual beyond which a loss grows linearly
-  double lever_arm_prior_std_m = 0.5;  // around the configured lever arm (gnss_factors.hpp LeverArmPrior)
+  double lever_arm_prior_std_m = 0.5;  // around the configured lever arm (gnss_factors.hpp VectorPrior)
+  // Around the configured mounting pitch and yaw: an installer's few degrees. Without it the
+  // pitch, seen only through the NHC's vertical velocity, wandered to 30 deg on parking_drive
+  // with positions-only fixes (RTKLIB .pos without velocity columns) and took the time offset
+  // 10 ms off with it.
+  double mounting_prior_std_rad = 5.0 * 3.14159265358979323846 / 180.0;
   int threads = 2;
   int max_passes = 8;               // relinearisations about the estimated time offset
   double offset_tolerance_s = 2e-4;  // ... until it moves less than this

@@ -92,24 +92,27 @@ class GnssVelocityFactor {
 
 namespace navfuse::calib {
 
-// A prior on a 3-vector parameter: the lever arm around its configured value, the IMU scale
-// factors around zero (their data-sheet std: x and y gyro scale are barely seen on a drive).
+// A prior on an N-vector parameter: the lever arm around its configured value, the mounting
+// pitch and yaw around theirs, the IMU scale factors around zero (their data-sheet std: x and y
+// gyro scale are barely seen on a drive).
 //
 // The lever arm's: a broad prior around its configured value. The component along the vertical
 // is seen only through changes of roll and pitch (p_z + l_z is what GNSS measures when level):
 // on a flat drive nothing else fixes it, and without the prior the solver wanders along that
-// direction. The prior's std then comes back as the estimate's: "not observed".
+// direction. The prior's std then comes back as the estimate's: "not observed". The mounting's
+// likewise: its pitch is seen only through the NHC's vertical velocity.
+template <int N>
 class VectorPrior {
  public:
-  VectorPrior(const Eigen::Vector3d& mean, double std) : lever_(mean), inv_std_(1.0 / std) {}
+  VectorPrior(const Eigen::Matrix<double, N, 1>& mean, double std) : mean_(mean), inv_std_(1.0 / std) {}
   template <typename T>
   bool operator()(const T* x, T* out) const {
-    for (int i = 0; i < 3; ++i) out[i] = (x[i] - T(lever_[i])) * T(inv_std_);
+    for (int i = 0; i < N; ++i) out[i] = (x[i] - T(mean_[i])) * T(inv_std_);
     return true;
   }
 
  private:
-  Eigen::Vector3d lever_;
+  Eigen::Matrix<double, N, 1> mean_;
   double inv_std_;
 };
 

@@ -60,8 +60,9 @@ class TruthSink {
   std::uint64_t rows_ = 0;
 };
 
-// --imu-time-offset, --imu-mounting over the scenario's IMU.
-void apply_imu_installation(const SimOptions& options, sim::Scenario& scenario) {
+// --imu-time-offset, --imu-mounting over the scenario's IMU; --no-gnss-velocity over its receiver.
+void apply_installation(const SimOptions& options, sim::Scenario& scenario) {
+  if (!options.gnss_velocity) scenario.gnss.velocity = false;
   if (options.imu_time_offset_s) scenario.imu.time_offset_s = *options.imu_time_offset_s;
   if (options.imu_mounting_rpy_deg) {
     const std::vector<double>& rpy = *options.imu_mounting_rpy_deg;
@@ -80,7 +81,7 @@ SimReport run_sim(const SimOptions& options) {
     throw CommandError(e.what());
   }
   if (options.seed) scenario.seed = *options.seed;
-  apply_imu_installation(options, scenario);
+  apply_installation(options, scenario);
   if (options.wheel_tick_m > 0.0) {
     scenario.wheel.vehicle_ticks = scenario.wheel.vehicle_speed;
     scenario.wheel.vehicle_speed = false;
@@ -221,6 +222,8 @@ void add_sim_command(CLI::App& root, int& exit_code) {
                   "IMU mounting sensor -> vehicle roll,pitch,yaw in deg (default: the scenario's)")
       ->delimiter(',')
       ->expected(3);
+  sub->add_flag("!--no-gnss-velocity", o.gnss_velocity,
+                "The receiver reports positions only (as an RTKLIB .pos without velocity columns)");
   add_quiet_flag(sub, args->quiet, "report of what was written");
   add_examples(sub, {{"a short drive as a CV7 (MIP) log, with its truth",
                       "navfuse sim --scenario drive_short --format mip --out drive.mip --truth truth.csv"},

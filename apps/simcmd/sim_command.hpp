@@ -36,6 +36,8 @@ struct SimOptions {
   // true time) and mounting sensor -> vehicle roll, pitch, yaw in degrees.
   std::optional<double> imu_time_offset_s;
   std::optional<std::vector<double>> imu_mounting_rpy_deg;
+  // false: the receiver reports positions only, as an RTKLIB .pos without velocity columns.
+  bool gnss_velocity = true;
 };
 
 struct SimReport {

@@ -5,6 +5,7 @@
 // smoother and the calibration to issue 16's held-out goals.
 #pragma once
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -21,7 +22,10 @@ struct ParkingDriveLog {
   std::string config_path;
 };
 
-inline ParkingDriveLog write_parking_drive(const std::filesystem::path& dir, std::optional<double> imu_time_offset_s) {
+// `gnss_velocity` false: the receiver reports positions only (an RTKLIB .pos without velocity
+// columns, the form KF-GINS-style data often comes in). `seed`: another draw of the drive's noise.
+inline ParkingDriveLog write_parking_drive(const std::filesystem::path& dir, std::optional<double> imu_time_offset_s,
+                                           bool gnss_velocity = true, std::optional<std::uint64_t> seed = std::nullopt) {
   ParkingDriveLog out{(dir / "parking.vnb").string(), (dir / "parking_truth.csv").string(),
                       (dir / "parking.yaml").string()};
   SimOptions sim;
@@ -30,6 +34,8 @@ inline ParkingDriveLog write_parking_drive(const std::filesystem::path& dir, std
   sim.out_path = out.log_path;
   sim.truth_path = out.truth_path;
   sim.device_rate_hz = 0.0;
+  sim.gnss_velocity = gnss_velocity;
+  sim.seed = seed;
   run_sim(sim);
   std::ofstream config(out.config_path);
   config << "device: generic\nplatform: land\n"
