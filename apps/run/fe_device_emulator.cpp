@@ -134,10 +134,13 @@ void FeDeviceEmulator::handle(const fe::Frame& frame, std::vector<std::uint8_t>&
       r.source = m.source;
       r.output_interface = m.output_interface;
       const auto source = static_cast<fe::ConfigSource>(m.source);
-      const bool known_source = source == fe::ConfigSource::kActive || source == fe::ConfigSource::kSaved ||
-                                source == fe::ConfigSource::kDefault;
+      if (source != fe::ConfigSource::kActive && source != fe::ConfigSource::kSaved &&
+          source != fe::ConfigSource::kDefault) {
+        r.response = static_cast<std::uint8_t>(fe::Response::kValueError);
+        encoder_.writer().append(std::move(r), reply);
+        return;
+      }
       for (const auto& e : encoder_.rates().entries()) {
-        if (!known_source) break;
         if (m.message_id != fe::kAllMessages && m.message_id != fe::to_u16(e.type)) continue;
         fe::MessageRateEntry entry;
         entry.protocol = static_cast<std::uint8_t>(fe::ProtocolType::kFusionEngine);
@@ -151,9 +154,7 @@ void FeDeviceEmulator::handle(const fe::Frame& frame, std::vector<std::uint8_t>&
         entry.effective_rate = static_cast<std::uint8_t>(e.rate);
         r.rates.push_back(entry);
       }
-      r.response = static_cast<std::uint8_t>(!known_source     ? fe::Response::kValueError
-                                             : r.rates.empty() ? fe::Response::kUnsupportedFeature
-                                                               : fe::Response::kOk);
+      r.response = static_cast<std::uint8_t>(r.rates.empty() ? fe::Response::kUnsupportedFeature : fe::Response::kOk);
       encoder_.writer().append(std::move(r), reply);
       return;
     }

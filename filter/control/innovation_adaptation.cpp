@@ -109,10 +109,9 @@ void adapt_to_innovation(FilterCore& c, const FilterOptions& o, InnovationWindow
     SystemRows d = SystemRows::Zero();
     d.leftCols<sx::kDynamicCount>().setIdentity();
     d.topRows<kBlock>() *= scale;
-    // Dead reckoning (no absolute position for longer than gnss_timeout_s, as update_mode
-    // decides): the fixes that end an outage found P grown too little.
-    const bool after_outage = seconds_since(now_ns, c.mode.last_absolute_position_ns) > o.gnss_timeout_s;
-    record_covariance_change(c, *before, d, after_outage);
+    // Made while dead reckoning (update_mode's decision): the fixes that end an outage found P
+    // grown too little.
+    record_covariance_change(c, *before, d, c.mode.mode == NavMode::kDeadReckoning);
   }
   ++c.adaptation.inflations;
   c.adaptation.position.clear();

@@ -32,8 +32,8 @@ PointPrediction gnss_position_prediction(const StateView& s, const Antenna& ante
   PointPrediction p = point_at(s, antenna.lever_arm_m);
   // The fix is the antenna at t + dt: v dt + a dt^2 / 2 with the (low-passed) acceleration of the
   // reference point. The second-order term is not small in a car park: a 3.5 m/s^2 turn moves the
-  // antenna 2.7 cm off the tangent in 125 ms, always towards the turn's centre, and left out it
-  // biased the estimate low. The jerk term, and the lever arm's share of the acceleration, are
+  // antenna 2.7 cm off the tangent in 125 ms, always towards the turn's centre, a systematic error
+  // where the offset is seen. The jerk term, and the lever arm's share of the acceleration, are
   // left out (the prior of dt is bounded for them: gnss.initial_time_offset_std_s).
   const double dt = s.x.gnss_time_offset_s;
   if (dt != 0.0) p.offset_ned_m += antenna_velocity_ned_mps(s, antenna.lever_arm_m) * dt + 0.5 * dt * dt * s.accel_ned_mps2;
