@@ -26,6 +26,29 @@ Eigen::Matrix3d euler_from_phi(const Eigen::Vector3d& rpy) {
   return m;
 }
 
+// The calibration states with their stds, from the captured variances.
+void fill_calibration(const StateFieldInputs& in, NavSolution::Calibration& cal) {
+  const NavState& x = in.x;
+  const StateSelection& states = in.states;
+  const auto std_of = [&in](int index) {
+    return std::sqrt(std::max(in.calibration_var(index - sx::kCoreCount), 0.0));
+  };
+  cal.odometer_scale_error = {states.wheel_scale, x.wheel_scale, std_of(sx::kWheelScale)};
+  cal.mount_pitch_yaw_rad.estimated = states.mounting;
+  cal.mount_pitch_yaw_rad.value = {x.mount_pitch_rad, x.mount_yaw_rad};
+  cal.mount_pitch_yaw_rad.std = {std_of(sx::kMountPitch), std_of(sx::kMountYaw)};
+  const auto vector3 = [&](NavSolution::Calibration::Vector<3>& v, bool estimated, const Eigen::Vector3d& value,
+                           int index) {
+    v.estimated = estimated;
+    v.value = value;
+    v.std = {std_of(index), std_of(index + 1), std_of(index + 2)};
+  };
+  vector3(cal.gnss_lever_arm_m, states.gnss_lever_arm, x.gnss_lever_arm_m, sx::kLeverArm);
+  vector3(cal.gyro_scale, states.gyro_scale, x.gyro_scale, sx::kGyroScale);
+  vector3(cal.accel_scale, states.accel_scale, x.accel_scale, sx::kAccelScale);
+  cal.gnss_time_offset_s = {states.gnss_time_offset, x.gnss_time_offset_s, std_of(sx::kGnssTimeOffset)};
+}
+
 }  // namespace
 
 void capture_state_fields(const NavState& x, const Covariance& p, const Eigen::Vector3d& rate_b_rps,
@@ -42,22 +65,8 @@ void capture_state_fields(const NavState& x, const Covariance& p, const Eigen::V
   in.force_b_mps2 = force_b_mps2;
   in.gravity_ned_mps2 = gravity_ned_mps2;
 
-  const auto std_of = [&p](int index) { return std::sqrt(std::max(p(index, index), 0.0)); };
-  NavSolution::Calibration& cal = in.calibration;
-  cal.odometer_scale_error = {states.wheel_scale, x.wheel_scale, std_of(sx::kWheelScale)};
-  cal.mount_pitch_yaw_rad.estimated = states.mounting;
-  cal.mount_pitch_yaw_rad.value = {x.mount_pitch_rad, x.mount_yaw_rad};
-  cal.mount_pitch_yaw_rad.std = {std_of(sx::kMountPitch), std_of(sx::kMountYaw)};
-  const auto vector3 = [&](NavSolution::Calibration::Vector<3>& v, bool estimated, const Eigen::Vector3d& value,
-                           int index) {
-    v.estimated = estimated;
-    v.value = value;
-    v.std = {std_of(index), std_of(index + 1), std_of(index + 2)};
-  };
-  vector3(cal.gnss_lever_arm_m, states.gnss_lever_arm, x.gnss_lever_arm_m, sx::kLeverArm);
-  vector3(cal.gyro_scale, states.gyro_scale, x.gyro_scale, sx::kGyroScale);
-  vector3(cal.accel_scale, states.accel_scale, x.accel_scale, sx::kAccelScale);
-  cal.gnss_time_offset_s = {states.gnss_time_offset, x.gnss_time_offset_s, std_of(sx::kGnssTimeOffset)};
+  in.calibration_var = p.diagonal().tail<sx::kCount - sx::kCoreCount>();
+  in.states = states;
 }
 
 void fill_state_fields(const StateFieldInputs& in, NavSolution& out) {
@@ -87,7 +96,7 @@ void fill_state_fields(const StateFieldInputs& in, NavSolution& out) {
   out.gyro_bias_std_rps = (c_sv * in.gyro_bias_cov * c_sv.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
   out.accel_bias_std_mps2 = (c_sv * in.accel_bias_cov * c_sv.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
 
-  out.calibration = in.calibration;
+  fill_calibration(in, out.calibration);
 
   out.gravity_ned_mps2 = in.gravity_ned_mps2;
   out.angular_rate_rps = in.rate_b_rps;

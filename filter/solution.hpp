@@ -28,8 +28,11 @@ struct StateFieldInputs {
   Eigen::Matrix3d c_vs = Eigen::Matrix3d::Identity();
   Eigen::Vector3d rate_b_rps = Eigen::Vector3d::Zero(), force_b_mps2 = Eigen::Vector3d::Zero(),
                   gravity_ned_mps2 = Eigen::Vector3d::Zero();
-  // The calibration states (values and stds), taken whole at capture: a handful of entries.
-  NavSolution::Calibration calibration{};
+  // The calibration states' variances (their values are in x) and which are estimated: the stds
+  // are taken on the thread that fills the solution, not on the filter's.
+  Eigen::Matrix<double, sx::kCount - sx::kCoreCount, 1> calibration_var =
+      Eigen::Matrix<double, sx::kCount - sx::kCoreCount, 1>::Zero();
+  StateSelection states{};
 };
 
 // `c_vs` is the sensor-to-vehicle rotation of FilterOptions::mounting_rpy_rad (rot::dcm_from_rpy),
