@@ -107,7 +107,7 @@ EpochPlan plan_epochs(const CalibrationLog& log, const CalibrationSetup& setup, 
     e.v = {v.x(), v.y(), v.z()};
     e.q = {q.x(), q.y(), q.z(), q.w()};
     const ImuRates r = imu_rates(log.imu, i);
-    e.knowns.mount_roll_rad = setup.mounting_rpy_rad.x();
+    e.knowns.c_vs0 = c_vs;
     e.knowns.rate_s_rps = r.gyro_rps - plan.bg0 - c_ts.transpose() * frame.earth_rate();
     e.knowns.accel_t_mps2 = c_ts * (r.accel_mps2 - plan.ba0) + frame.gravity(e.llh) - 2.0 * frame.earth_rate().cross(v);
     if (!plan.epochs.empty()) {

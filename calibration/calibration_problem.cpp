@@ -16,6 +16,7 @@
 #include "calibration/local_frame.hpp"
 #include "calibration/odometry_factors.hpp"
 #include "calibration/preintegration_factor.hpp"
+#include "core/rotation/rotation.hpp"
 
 namespace navfuse::calib {
 namespace {
@@ -25,7 +26,7 @@ constexpr double kNsPerS = 1e9;
 // The calibration's own parameter blocks.
 struct Globals {
   double lever[3] = {0, 0, 0};
-  double mount[2] = {0, 0};  // pitch, yaw
+  double mount[2] = {0, 0};  // residual vehicle pitch, yaw about the configured mounting (mounting_dcm)
   double dt[1] = {0};
   double scale[1] = {1};
   double bg[3] = {0, 0, 0};
@@ -63,11 +64,43 @@ bool block_stds(ceres::Covariance& cov, const double* block, int size, double* o
   return true;
 }
 
-// One solve, linearised about `setup` (see calibrate()).
-CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& setup, const CalibrationOptions& options) {
+// The covariance block of one parameter block (row-major), or nothing when Ceres cannot compute it.
+bool block_covariance(ceres::Covariance& cov, const double* block, int size, Eigen::MatrixXd& out) {
+  std::vector<double> c(static_cast<std::size_t>(size * size));
+  if (!cov.GetCovarianceBlock(block, block, c.data())) return false;
+  out = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(c.data(), size, size);
+  return true;
+}
+
+// The config key's roll, pitch and yaw of the configured mounting turned by `residual`.
+Eigen::Vector3d mounting_rpy(const Eigen::Vector2d& residual, const Eigen::Matrix3d& c_vs0) {
+  return rot::rpy_from_dcm(mounting_dcm(residual.data(), c_vs0));
+}
+
+// Their std devs from the residual's 2 x 2 covariance, through the Jacobian of the Euler angles
+// (central differences; angles wrapped): for a sensor mounted x right, z up the vehicle pitch
+// residual is the Euler roll's, so all three may be non-zero.
+Eigen::Vector3d mounting_rpy_std(const Eigen::Vector2d& residual, const Eigen::Matrix2d& cov, const Eigen::Matrix3d& c_vs0) {
+  constexpr double kStep_rad = 1e-6;
+  Eigen::Matrix<double, 3, 2> j;
+  for (int i = 0; i < 2; ++i) {
+    const Eigen::Vector2d h = kStep_rad * Eigen::Vector2d::Unit(i);
+    const Eigen::Vector3d d = mounting_rpy(residual + h, c_vs0) - mounting_rpy(residual - h, c_vs0);
+    for (int a = 0; a < 3; ++a) j(a, i) = rot::wrap_pi(d[a]) / (2.0 * kStep_rad);
+  }
+  // An angle the residual does not move (the Euler roll of a sensor mounted in the vehicle axes)
+  // differs only by rounding: held, std 0.
+  const Eigen::Vector3d std = (j * cov * j.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
+  return std.unaryExpr([](double s) { return s < 1e-9 ? 0.0 : s; });
+}
+
+// One solve, linearised about `setup` and the mounting residual found so far (see calibrate()).
+CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& setup,
+                             const Eigen::Vector2d& mount_residual_rad, const CalibrationOptions& options) {
   CalibrationResult result;
   result.gnss_lever_arm_m.value = setup.gnss_lever_arm_m;
-  result.mounting_rpy_rad.value = setup.mounting_rpy_rad;
+  result.mounting_residual_rad.value = mount_residual_rad;
+  result.mounting_rpy_rad.value = mounting_rpy(mount_residual_rad, rot::dcm_from_rpy(setup.mounting_rpy_rad));
   result.imu_time_offset_s.value = setup.imu_time_offset_s;
   if (log.trajectory.empty() || log.imu.size() < 2) {
     result.message = "no smoothed trajectory or IMU samples to start from";
@@ -89,8 +122,8 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
     g.bg[i] = plan.bg0[i];
     g.ba[i] = plan.ba0[i];
   }
-  g.mount[0] = setup.mounting_rpy_rad.y();
-  g.mount[1] = setup.mounting_rpy_rad.z();
+  g.mount[0] = mount_residual_rad.x();
+  g.mount[1] = mount_residual_rad.y();
   g.dt[0] = setup.imu_time_offset_s;
 
   ceres::Problem problem;
@@ -187,19 +220,19 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
   }
 
   // Odometry and NHC at every epoch.
-  const Eigen::Matrix3d c_vs0 = dcm_from_rpy(setup.mounting_rpy_rad.x(), setup.mounting_rpy_rad.y(), setup.mounting_rpy_rad.z());
+  const Eigen::Matrix3d c_vs0 = rot::dcm_from_rpy(setup.mounting_rpy_rad);
+  const Eigen::Matrix3d c_vs_start = mounting_dcm(mount_residual_rad.data(), c_vs0);
   const auto speed_gap_ns = static_cast<std::int64_t>(0.2 * kNsPerS);
   for (Epoch& e : epochs) {
     double speed = 0.0, std = 0.0;
-    const double roll = e.knowns.mount_roll_rad;
     if (speed_at(log.speeds, e.time_ns + offset_ns, speed_gap_ns, speed, std)) {
       // The speed's rate of change from the IMU's acceleration, not from the speeds themselves:
       // a slope from the same noisy samples as the speed correlates with its noise and biases
       // the time offset (errors in variables). For motion along x, d(v_x)/dt = a_x.
       const Eigen::Matrix3d c_ts = Eigen::Quaterniond(e.q[3], e.q[0], e.q[1], e.q[2]).toRotationMatrix();
-      const double slope = (c_vs0 * c_ts.transpose() * e.knowns.accel_t_mps2).x();
+      const double slope = (c_vs_start * c_ts.transpose() * e.knowns.accel_t_mps2).x();
       problem.AddResidualBlock(new ceres::AutoDiffCostFunction<WheelSpeedFactor, 1, 3, 4, 2, 1, 1>(new WheelSpeedFactor(
-                                   speed, slope, setup.imu_time_offset_s, std, roll, e.knowns.rate_s_rps,
+                                   speed, slope, setup.imu_time_offset_s, std, c_vs0, e.knowns.rate_s_rps,
                                    setup.wheel_lever_arm_m)),
                                new ceres::HuberLoss(options.huber_sigmas), e.v.data(), e.q.data(), g.mount, g.scale,
                                g.dt);
@@ -208,7 +241,7 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
     const Eigen::Vector3d v(e.v[0], e.v[1], e.v[2]);
     if (setup.land_vehicle && v.norm() > setup.nhc_min_speed_mps) {
       problem.AddResidualBlock(new ceres::AutoDiffCostFunction<NhcFactor, 2, 3, 4, 2>(new NhcFactor(
-                                   setup.nhc_lateral_std_mps, setup.nhc_vertical_std_mps, roll, e.knowns.rate_s_rps,
+                                   setup.nhc_lateral_std_mps, setup.nhc_vertical_std_mps, c_vs0, e.knowns.rate_s_rps,
                                    setup.nhc_lever_arm_m)),
                                new ceres::HuberLoss(options.huber_sigmas), e.v.data(), e.q.data(), g.mount);
       ++result.nhc_residuals;
@@ -219,9 +252,9 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
   if (!result.mounting_estimated) {
     problem.SetParameterBlockConstant(g.mount);
   } else {
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<VectorPrior<2>, 2, 2>(new VectorPrior<2>(
-                                 Eigen::Vector2d(setup.mounting_rpy_rad.y(), setup.mounting_rpy_rad.z()),
-                                 options.mounting_prior_std_rad)),
+    // Around the configured mounting (residual zero), in every pass.
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<VectorPrior<2>, 2, 2>(
+                                 new VectorPrior<2>(Eigen::Vector2d::Zero(), options.mounting_prior_std_rad)),
                              nullptr, g.mount);
   }
 
@@ -258,7 +291,8 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
   result.imu_variance_factor = 2.0 * imu_cost / (9.0 * static_cast<double>(imu_blocks.size()));
 
   result.gnss_lever_arm_m.value = Eigen::Vector3d(g.lever[0], g.lever[1], g.lever[2]);
-  result.mounting_rpy_rad.value = Eigen::Vector3d(setup.mounting_rpy_rad.x(), g.mount[0], g.mount[1]);
+  result.mounting_residual_rad.value = Eigen::Vector2d(g.mount[0], g.mount[1]);
+  result.mounting_rpy_rad.value = mounting_rpy(result.mounting_residual_rad.value, c_vs0);
   result.imu_time_offset_s.value = g.dt[0];
   result.gyro_bias_rps.value = Eigen::Vector3d(g.bg[0], g.bg[1], g.bg[2]);
   result.accel_bias_mps2.value = Eigen::Vector3d(g.ba[0], g.ba[1], g.ba[2]);
@@ -294,8 +328,11 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
     result.gyro_scale.std = k * Eigen::Vector3d(s[0], s[1], s[2]);
     result.covariance_ok = result.covariance_ok && block_stds(covariance, g.sa, 3, s);
     result.accel_scale.std = k * Eigen::Vector3d(s[0], s[1], s[2]);
-    if (result.mounting_estimated && block_stds(covariance, g.mount, 2, s)) {
-      result.mounting_rpy_rad.std = k * Eigen::Vector3d(0.0, s[0], s[1]);
+    Eigen::MatrixXd mount_cov;
+    if (result.mounting_estimated && block_covariance(covariance, g.mount, 2, mount_cov)) {
+      const Eigen::Matrix2d c = k * k * mount_cov;
+      result.mounting_residual_rad.std = c.diagonal().cwiseMax(0.0).cwiseSqrt();
+      result.mounting_rpy_rad.std = mounting_rpy_std(result.mounting_residual_rad.value, c, c_vs0);
     }
     if (result.odometer_scale && block_stds(covariance, g.scale, 1, s)) result.odometer_scale->std = k * s[0];
   } else {
@@ -318,15 +355,18 @@ CalibrationResult calibrate(const CalibrationLog& log, const CalibrationOptions&
   // vibrating parking_drive it went 1.6 -> 1.2 and one round's time offset -99.6 -> -119.2 ms
   // (truth -125); on calibration_drive (0.01) it never acts.
   const auto start = std::chrono::steady_clock::now();
+  // The mounting stays the configured one in `setup` (the smoothed attitude was made with it, and
+  // the epochs turn it into the sensor's); the residual found so far is carried instead.
   CalibrationSetup setup = log.setup;
+  Eigen::Vector2d mount_residual_rad = Eigen::Vector2d::Zero();
   CalibrationResult result;
   for (int pass = 0; pass < options.max_passes; ++pass) {
-    result = solve_once(log, setup, options);
+    result = solve_once(log, setup, mount_residual_rad, options);
     if (result.iterations == 0 || !result.converged) break;
     const double moved_s = std::abs(result.imu_time_offset_s.value - setup.imu_time_offset_s);
     setup.imu_time_offset_s = result.imu_time_offset_s.value;
     setup.gnss_lever_arm_m = result.gnss_lever_arm_m.value;
-    setup.mounting_rpy_rad = result.mounting_rpy_rad.value;
+    mount_residual_rad = result.mounting_residual_rad.value;
     const bool reweight = result.imu_variance_factor > options.imu_variance_threshold &&
                           setup.imu_noise_scale < options.max_imu_noise_scale;
     if (reweight) {

@@ -10,7 +10,8 @@
 // added so odometry and NHC are seen throughout. An IMU gap longer than max_imu_gap_s breaks the
 // chain: the pieces share only the calibration parameters.
 //
-// Estimated: lever arm, mounting pitch and yaw (when odometry or NHC sees them; roll is held),
+// Estimated: lever arm, mounting pitch and yaw about the vehicle axes (when odometry or NHC sees
+// them; the vehicle roll is held; mounting_rotation.hpp),
 // the IMU time offset, the odometer scale (with wheel speeds), gyro and accelerometer biases
 // (constant over the log; their drift is allowed for in the preintegration covariance). Their std
 // devs come from ceres::Covariance, scaled up by the fit's variance factor when residuals are
@@ -28,10 +29,10 @@ struct CalibrationOptions {
   int max_iterations = 50;
   double huber_sigmas = 2.0;  // whitened residual beyond which a loss grows linearly
   double lever_arm_prior_std_m = 0.5;  // around the configured lever arm (gnss_factors.hpp VectorPrior)
-  // Around the configured mounting pitch and yaw: an installer's few degrees. Without it the
-  // pitch, seen only through the NHC's vertical velocity, wandered to 30 deg on parking_drive
-  // with positions-only fixes (RTKLIB .pos without velocity columns) and took the time offset
-  // 10 ms off with it.
+  // On the residual pitch and yaw about the configured mounting, in every pass: an installer's
+  // few degrees. Without it an angle no residual sees wanders (30 deg on parking_drive with
+  // positions-only fixes while the mounting was the Euler pitch, which for that sensor was a
+  // vehicle roll).
   double mounting_prior_std_rad = 5.0 * 3.14159265358979323846 / 180.0;
   int threads = 2;
   int max_passes = 8;               // relinearisations about the estimated time offset

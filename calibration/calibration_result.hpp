@@ -14,6 +14,10 @@ struct Estimate3 {
   Eigen::Vector3d value = Eigen::Vector3d::Zero();
   Eigen::Vector3d std = Eigen::Vector3d::Zero();  // 0: not estimated (held at the configured value)
 };
+struct Estimate2 {
+  Eigen::Vector2d value = Eigen::Vector2d::Zero();
+  Eigen::Vector2d std = Eigen::Vector2d::Zero();
+};
 struct Estimate1 {
   double value = 0.0;
   double std = 0.0;
@@ -21,7 +25,11 @@ struct Estimate1 {
 
 struct CalibrationResult {
   Estimate3 gnss_lever_arm_m;    // vehicle frame
-  Estimate3 mounting_rpy_rad;    // sensor -> vehicle; roll held at the configured value (std 0)
+  // The mounting as the config key gives it (sensor -> vehicle, roll, pitch, yaw): the configured
+  // one turned by the residual vehicle pitch and yaw below (mounting_dcm); the vehicle frame's
+  // roll is held. The Euler angles' stds follow from the residual's covariance.
+  Estimate3 mounting_rpy_rad;
+  Estimate2 mounting_residual_rad;  // vehicle pitch, yaw about the configured mounting
   bool mounting_estimated = false;  // false: no odometry/NHC saw it
   // The IMU reported in the vehicle frame (the device's own mounting): the mounting is then a
   // residual about the vehicle axes, not the config key's sensor -> vehicle rotation.

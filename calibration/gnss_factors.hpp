@@ -9,8 +9,9 @@
 //   antenna position  p + R C_sv l + v_a (tau - dt_imu),  v_a = v + R (omega_s x C_sv l)
 //   antenna velocity  v_a + a (tau - dt_imu)
 // omega_s (bias-compensated rate) and a (the acceleration) at the epoch are known terms from the
-// starting solution. Mounting roll is held (unobservable from odometry; a constant of the factor).
-// Blocks: p, v, q, lever arm (vehicle frame), mounting [pitch, yaw], dt_imu.
+// starting solution. The mounting is the configured one turned by the residual vehicle pitch and
+// yaw (mounting_dcm); its roll is held (unobservable from odometry).
+// Blocks: p, v, q, lever arm (vehicle frame), mounting residual [pitch, yaw], dt_imu.
 #pragma once
 
 #include <Eigen/Cholesky>
@@ -23,7 +24,7 @@ namespace navfuse::calib {
 
 // What GNSS factors share at one epoch.
 struct EpochKnowns {
-  double mount_roll_rad = 0.0;
+  Eigen::Matrix3d c_vs0 = Eigen::Matrix3d::Identity();  // the configured mounting, sensor -> vehicle
   Eigen::Vector3d rate_s_rps = Eigen::Vector3d::Zero();   // angular rate w.r.t. the earth, sensor frame
   Eigen::Vector3d accel_t_mps2 = Eigen::Vector3d::Zero();  // acceleration, tangent frame
 };
@@ -49,7 +50,7 @@ class GnssPositionFactor {
   bool operator()(const T* p, const T* v, const T* q, const T* lever, const T* mount, const T* dt, T* out) const {
     using V3 = Eigen::Matrix<T, 3, 1>;
     const Eigen::Matrix<T, 3, 3> r = Eigen::Map<const Eigen::Quaternion<T>>(q).toRotationMatrix();
-    const V3 lever_s = dcm_from_rpy(T(k_.mount_roll_rad), mount[0], mount[1]).transpose() * Eigen::Map<const V3>(lever);
+    const V3 lever_s = mounting_dcm(mount, k_.c_vs0).transpose() * Eigen::Map<const V3>(lever);
     const V3 va = antenna_velocity(V3(Eigen::Map<const V3>(v)), r, lever_s, k_);
     const V3 predicted = Eigen::Map<const V3>(p) + r * lever_s + va * (T(tau_) - dt[0]);
     Eigen::Map<V3> res(out);
@@ -73,7 +74,7 @@ class GnssVelocityFactor {
   bool operator()(const T* v, const T* q, const T* lever, const T* mount, const T* dt, T* out) const {
     using V3 = Eigen::Matrix<T, 3, 1>;
     const Eigen::Matrix<T, 3, 3> r = Eigen::Map<const Eigen::Quaternion<T>>(q).toRotationMatrix();
-    const V3 lever_s = dcm_from_rpy(T(k_.mount_roll_rad), mount[0], mount[1]).transpose() * Eigen::Map<const V3>(lever);
+    const V3 lever_s = mounting_dcm(mount, k_.c_vs0).transpose() * Eigen::Map<const V3>(lever);
     const V3 predicted =
         antenna_velocity(V3(Eigen::Map<const V3>(v)), r, lever_s, k_) + k_.accel_t_mps2.cast<T>() * (T(tau_) - dt[0]);
     Eigen::Map<V3> res(out);
@@ -93,7 +94,7 @@ class GnssVelocityFactor {
 namespace navfuse::calib {
 
 // A prior on an N-vector parameter: the lever arm around its configured value, the mounting
-// pitch and yaw around theirs, the IMU scale factors around zero (their data-sheet std: x and y
+// pitch and yaw residuals around zero, the IMU scale factors around zero (their data-sheet std: x and y
 // gyro scale are barely seen on a drive).
 //
 // The lever arm's: a broad prior around its configured value. The component along the vertical

@@ -21,6 +21,20 @@ Eigen::Matrix<T, 3, 3> dcm_from_rpy(const T& roll, const T& pitch, const T& yaw)
   return c;
 }
 
+// The mounting the calibration estimates: the configured C_vs0 (sensor -> vehicle) turned by a
+// residual pitch, then yaw, about the vehicle's own y and z axes:
+//   C_vs = R_z(residual[1]) R_y(residual[0]) C_vs0
+// so the two angles are the vehicle frame's pitch and yaw errors whatever way the sensor is
+// mounted, the errors the odometry and NHC residuals see (a wheel speed along the vehicle's x,
+// no velocity along its y and z). The config key's Euler pitch and yaw are those axes only when
+// the sensor's roll and yaw are near zero: for a sensor mounted x right, z up (roll 180, yaw -90,
+// as on the walk and the held-out car) the Euler pitch turns the vehicle frame about its x axis,
+// a roll that no residual sees, while the vehicle pitch is the Euler roll.
+template <typename T>
+Eigen::Matrix<T, 3, 3> mounting_dcm(const T* residual, const Eigen::Matrix3d& c_vs0) {
+  return dcm_from_rpy(T(0), residual[0], residual[1]) * c_vs0.cast<T>();
+}
+
 // Vector cross product for any scalar (Eigen's cross() on Jets is fine, this keeps the types
 // explicit where a double vector meets a Jet one).
 template <typename T>

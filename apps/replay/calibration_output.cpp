@@ -1,16 +1,48 @@
 #include "apps/replay/calibration_output.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 #include <vector>
 
+#include "calibration/mounting_rotation.hpp"
 #include "core/rotation/rotation.hpp"
 
 namespace navfuse::apps {
 namespace {
 
 double rounded(double v, double step) { return std::round(v / step) * step; }
+
+// An estimate is written into the configuration only when the log observed it: its std dev at
+// most these. Beyond them the fit held it near its prior and moved it by whatever the model lacks
+// (on parking_drive with positions only the vertical lever arm went from -0.20 to +2.7 m, std
+// 1.0 m; with velocities to +0.07, std 0.18: written back, the next round's heights were 0.25 m
+// off); a value that poorly known is no better than the configured one, which stays.
+constexpr double kWrittenLeverArmStd_m = 0.05;
+constexpr double kWrittenMountingStd_rad = 0.5 * rot::kDegToRad;
+constexpr double kWrittenTimeOffsetStd_s = 0.010;
+
+bool observed(double std, double bound) { return std > 0.0 && std <= bound; }
+
+// What calibrated_config() writes of each estimate.
+struct Written {
+  std::array<bool, 3> lever{};
+  std::array<bool, 2> mounting{};  // vehicle pitch, yaw residuals
+  bool time_offset = false;
+};
+
+Written written(const calib::CalibrationResult& r) {
+  Written w;
+  if (!r.covariance_ok) return w;
+  for (int i = 0; i < 3; ++i) w.lever[static_cast<std::size_t>(i)] = observed(r.gnss_lever_arm_m.std[i], kWrittenLeverArmStd_m);
+  for (int i = 0; i < 2; ++i) {
+    w.mounting[static_cast<std::size_t>(i)] = r.mounting_estimated && !r.mounting_is_residual &&
+                                              observed(r.mounting_residual_rad.std[i], kWrittenMountingStd_rad);
+  }
+  w.time_offset = observed(r.imu_time_offset_s.std, kWrittenTimeOffsetStd_s);
+  return w;
+}
 
 // One printable row per scalar: name, unit, value and std in that unit (std 0: held, not estimated).
 struct Row {
@@ -30,6 +62,13 @@ std::vector<Row> rows(const calib::CalibrationResult& r) {
   for (int i = 0; i < 3; ++i) {
     out.push_back({std::string("imu.mounting_rpy_deg ") + angles[i], "deg", r.mounting_rpy_rad.value[i] * rot::kRadToDeg,
                    r.mounting_rpy_rad.std[i] * rot::kRadToDeg});
+  }
+  // What the fit estimates (calibration/mounting_rotation.hpp): the vehicle frame turned about its
+  // own y and z axes from the configured mounting; the Euler angles above follow from it.
+  const char* residuals[] = {"mounting vehicle pitch residual", "mounting vehicle yaw residual"};
+  for (int i = 0; i < 2; ++i) {
+    out.push_back({residuals[i], "deg", r.mounting_residual_rad.value[i] * rot::kRadToDeg,
+                   r.mounting_residual_rad.std[i] * rot::kRadToDeg});
   }
   out.push_back({"imu.time_offset_s", "ms", r.imu_time_offset_s.value * 1e3, r.imu_time_offset_s.std * 1e3});
   if (r.odometer_scale) {
@@ -73,26 +112,49 @@ std::string solve_line(const calib::CalibrationResult& r) {
 
 config::Config calibrated_config(const config::Config& base, const calib::CalibrationResult& r) {
   config::Config c = base;
-  for (int i = 0; i < 3; ++i) c.gnss.lever_arm_m[static_cast<std::size_t>(i)] = rounded(r.gnss_lever_arm_m.value[i], 1e-4);
-  if (r.mounting_estimated && !r.mounting_is_residual) {
-    for (int i = 0; i < 3; ++i) {
-      c.imu.mounting_rpy_deg[static_cast<std::size_t>(i)] = rounded(r.mounting_rpy_rad.value[i] * rot::kRadToDeg, 1e-4);
-    }
+  const Written w = written(r);
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (w.lever[i]) c.gnss.lever_arm_m[i] = rounded(r.gnss_lever_arm_m.value[static_cast<int>(i)], 1e-4);
   }
-  c.imu.time_offset_s = rounded(r.imu_time_offset_s.value, 1e-5);
+  if (w.mounting[0] || w.mounting[1]) {
+    // The configured mounting turned by the observed residuals only (mounting_rotation.hpp).
+    const double residual[2] = {w.mounting[0] ? r.mounting_residual_rad.value.x() : 0.0,
+                                w.mounting[1] ? r.mounting_residual_rad.value.y() : 0.0};
+    const Eigen::Vector3d rpy0(base.imu.mounting_rpy_deg[0], base.imu.mounting_rpy_deg[1], base.imu.mounting_rpy_deg[2]);
+    const Eigen::Vector3d rpy = rot::rpy_from_dcm(calib::mounting_dcm(residual, rot::dcm_from_rpy(rpy0 * rot::kDegToRad)));
+    for (int i = 0; i < 3; ++i) c.imu.mounting_rpy_deg[static_cast<std::size_t>(i)] = rounded(rpy[i] * rot::kRadToDeg, 1e-4);
+  }
+  if (w.time_offset) c.imu.time_offset_s = rounded(r.imu_time_offset_s.value, 1e-5);
   return c;
 }
 
 std::string calibration_yaml(const config::Config& base, const calib::CalibrationResult& r) {
   std::ostringstream s;
   s << "# navfuse smooth --calibration-out: the configuration with the calibrated keys replaced\n"
-       "# (gnss.lever_arm_m, imu.mounting_rpy_deg pitch and yaw, imu.time_offset_s). Estimates and 1-sigma\n"
+       "# (gnss.lever_arm_m, imu.mounting_rpy_deg, imu.time_offset_s). Estimates and 1-sigma\n"
        "# std devs from the solver's covariance (0: held at the configured value, not estimated):\n";
   for (const Row& row : rows(r)) {
     s << "#   " << row.name << ": " << number(row.value, 4) << " +- " << number(row.std, 4) << " " << row.unit << "\n";
   }
   if (r.odometer_scale) {
     s << "# The odometer scale has no config key (the filter estimates it online, wheel.initial_scale_std).\n";
+  }
+  const Written w = written(r);
+  std::string kept;
+  const char* axes[] = {"x", "y", "z"};
+  for (int i = 0; i < 3; ++i) {
+    if (!w.lever[static_cast<std::size_t>(i)]) kept += std::string(" gnss.lever_arm_m ") + axes[i] + ";";
+  }
+  const char* turns[] = {"pitch", "yaw"};
+  for (int i = 0; i < 2; ++i) {
+    if (r.mounting_estimated && !r.mounting_is_residual && !w.mounting[static_cast<std::size_t>(i)]) {
+      kept += std::string(" mounting vehicle ") + turns[i] + " residual;";
+    }
+  }
+  if (!w.time_offset) kept += " imu.time_offset_s;";
+  if (!kept.empty()) {
+    kept.pop_back();
+    s << "# Not observed well enough to write (std dev above 5 cm, 0.5 deg, 10 ms), kept as configured:" << kept << "\n";
   }
   if (r.mounting_is_residual) {
     s << "# The IMU reports in the vehicle frame (the device applies its own mounting): the mounting above is\n"

@@ -64,23 +64,51 @@ TEST(CalibrationFactors, WheelSpeedAndNhcSeeTheMounting) {
   // from the vehicle: the vehicle sees (10 cos 1, 10 sin 1, 0) m/s.
   const double v[3] = {0, 10, 0}, mount[2] = {0, 1.0 * kDeg}, scale[1] = {1.01}, dt[1] = {0.0};
   const auto q = yaw_quat(90.0 * kDeg);
-  const NhcFactor nhc(0.1, 0.2, 0.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+  const NhcFactor nhc(0.1, 0.2, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
   double r[2];
   ASSERT_TRUE(nhc(v, q.data(), mount, r));
   EXPECT_NEAR(r[0], 10.0 * std::sin(1.0 * kDeg) / 0.1, 1e-9);
   EXPECT_NEAR(r[1], 0.0, 1e-9);
   // Odometer reading 10.2 with its slope 1 m/s^2 over an offset change of 0.01 s: 10.21 measured
   // against 1.01 * 10 cos 1 deg.
-  const WheelSpeedFactor wheel(10.2, 1.0, -0.01, 0.05, 0.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+  const WheelSpeedFactor wheel(10.2, 1.0, -0.01, 0.05, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(),
+                               Eigen::Vector3d::Zero());
   double w[1];
   ASSERT_TRUE(wheel(v, q.data(), mount, scale, dt, w));
   EXPECT_NEAR(w[0], (10.21 - 1.01 * 10.0 * std::cos(1.0 * kDeg)) / 0.05, 1e-9);
   // A lever arm behind the IMU while turning right at 0.5 rad/s: the point 1.2 m back slides left
   // at 0.6 m/s (omega x l = (0, 0, 0.5) x (-1.2, 0, 0) = (0, -0.6, 0)).
   const double straight[2] = {0, 0};
-  const NhcFactor rear(1.0, 1.0, 0.0, Eigen::Vector3d(0, 0, 0.5), Eigen::Vector3d(-1.2, 0, 0));
+  const NhcFactor rear(1.0, 1.0, Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, 0.5), Eigen::Vector3d(-1.2, 0, 0));
   ASSERT_TRUE(rear(v, q.data(), straight, r));
   EXPECT_NEAR(r[0], -0.6, 1e-9);
+}
+
+TEST(CalibrationFactors, TheMountingResidualIsAboutTheVehicleAxesWhateverTheSensorsOrientation) {
+  // A sensor mounted x right, z up (roll 180, yaw -90) on a level car driving north at 10 m/s:
+  // C_ts = C_vs0^T. The residual pitch turns the vehicle frame about its own y axis, so the car
+  // is seen climbing: v_v = R_y(dp) (10, 0, 0) = (10 cos dp, 0, -10 sin dp), and NHC's vertical
+  // residual is -10 sin dp / std. (Taken as the config key's Euler pitch instead, the same angle
+  // would turn the vehicle frame about its x axis, a roll, and the NHC would see nothing.)
+  const Eigen::Matrix3d c_vs0 = rot::dcm_from_rpy(Eigen::Vector3d(180.0 * kDeg, 0.0, -90.0 * kDeg));
+  const Eigen::Quaterniond q_ts(c_vs0.transpose());
+  const double q[4] = {q_ts.x(), q_ts.y(), q_ts.z(), q_ts.w()};
+  const double v[3] = {10, 0, 0}, pitched[2] = {2.0 * kDeg, 0.0}, yawed[2] = {0.0, 2.0 * kDeg};
+  const NhcFactor nhc(0.1, 0.2, c_vs0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+  double r[2];
+  ASSERT_TRUE(nhc(v, q, pitched, r));
+  EXPECT_NEAR(r[0], 0.0, 1e-9);
+  EXPECT_NEAR(r[1], -10.0 * std::sin(2.0 * kDeg) / 0.2, 1e-9);
+  // The residual yaw: v_v = R_z(dy) (10, 0, 0) = (10 cos dy, 10 sin dy, 0).
+  ASSERT_TRUE(nhc(v, q, yawed, r));
+  EXPECT_NEAR(r[0], 10.0 * std::sin(2.0 * kDeg) / 0.1, 1e-9);
+  EXPECT_NEAR(r[1], 0.0, 1e-9);
+  // With a sensor mounted in the vehicle axes but for a roll, the residuals are the config key's
+  // own Euler pitch and yaw (C_vs0 = R_x(roll)).
+  const Eigen::Vector3d rpy(0.3 * kDeg, 1.5 * kDeg, -2.0 * kDeg);
+  const double residual[2] = {rpy.y(), rpy.z()};
+  EXPECT_TRUE(mounting_dcm(residual, rot::dcm_from_rpy(Eigen::Vector3d(rpy.x(), 0.0, 0.0)))
+                  .isApprox(rot::dcm_from_rpy(rpy), 1e-15));
 }
 
 TEST(CalibrationFactors, PreintegrationZeroWhenConsistentAndSeesABiasChange) {
