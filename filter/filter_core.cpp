@@ -65,6 +65,7 @@ void FilterCore::restart(const FilterOptions& o) {
   adaptation = AdaptationState{};
   adaptation.inflations = previous_adaptation.inflations;  // counters survive restarts
   adaptation.max_process_noise_scale = previous_adaptation.max_process_noise_scale;
+  output_blend.offset_ned_m.setZero();  // a restart has no position to be continuous with
   const ModeState previous = mode;
   mode = ModeState{};
   mode.reached_mask = previous.reached_mask;
@@ -114,6 +115,7 @@ bool FilterCore::propagate(const FilterOptions& o, const ImuIncrement& raw) {
   const std::int64_t previous_ns = x.time_ns;
   if (record.sink != nullptr) record_step_start(*this);
   strapdown_step(x, memory, comp, earth);
+  decay_output_blend(*this, o, comp.dt_s);
   if (o.states.gnss_time_offset) {
     // One sample's acceleration carries the whole vibration (on parking_drive the engine's tone
     // alone is 0.5 m/s^2 against manoeuvres of 1-3 m/s^2): as the regressor of the offset in the

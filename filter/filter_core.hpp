@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "core/measurements/measurements.hpp"
+#include "filter/output_blend.hpp"
 #include "filter/control/innovation_adaptation.hpp"
 #include "filter/ekf.hpp"
 #include "filter/filter_options.hpp"
@@ -93,6 +94,9 @@ struct GnssControlState {
   std::int64_t velocity_reject_since_ns = INT64_MIN;
   std::int64_t last_heading_ns = INT64_MIN;
   GnssFixType last_fix = GnssFixType::kNone;
+  // RTK fixed after a worse solution: the first fixed position used since brings the correction
+  // the output blends (output_blend.hpp).
+  bool blend_next_fixed = false;
   // The newest fix seen, kept to place the filter when the heading becomes known.
   bool have_fix = false;
   GnssPosition latest_fix;
@@ -186,6 +190,7 @@ struct FilterCore {
   BaroState baro;
   TiltState tilt;
   ModeState mode;
+  OutputBlend output_blend;
   RecordHook record;  // forward-pass recording for the smoother; kept across restart()
 
   // Back to Init with the configured priors (keeps modes reached and stats elsewhere).

@@ -60,6 +60,8 @@ FilterOptions options_from_config(const navfuse::config::Config& config) {
   o.gnss_velocity_std_scale = g.velocity_std_scale;
   o.gnss_timeout_s = g.timeout_s;
   o.gnss_recovery_s = g.recovery_s;
+  o.output_jump_blend_s = config.output.jump_blend_s;
+  o.output_jump_blend_min_m = config.output.jump_blend_min_m;
   const auto& gates = config.gates;
   o.chi2_gate = {gates.chi2_1d, gates.chi2_2d, gates.chi2_3d};
   auto own_gate = [&o](GatedAid aid, const std::optional<double>& chi2) {

@@ -162,6 +162,10 @@ struct FilterOptions {
   // GNSS control.
   double gnss_timeout_s = 2.0;   // no position aiding for longer: dead reckoning
   double gnss_recovery_s = 3.0;  // sustained rejection for longer: re-anchor to GNSS
+  // Jump-free position output (output_blend.hpp): a correction of at least `_min_m` reaches the
+  // output over this time constant (0: the output jumps with the filter).
+  double output_jump_blend_s = 0.25;
+  double output_jump_blend_min_m = 0.1;
   // Chi-square innovation gate per measurement dimension (1, 2, 3): the 99.99 % quantiles.
   std::array<double, 3> chi2_gate = {15.14, 18.42, 21.11};
   // A gate of its own per aiding source (config gates.<aid>), applied to every update of that

@@ -127,6 +127,7 @@ void capture_solution(const FilterCore& c, const FilterOptions& o, const Eigen::
   }
 
   capture_state_fields(x, c.ekf.p, c.rate_b_rps, c.force_b_mps2, c.earth.gravity_ned_mps2, c_vs, o.states, in.state);
+  apply_output_blend(c.output_blend, in.state.x, in.state.pos_cov);
 
   if (mode.levelled) {
     in.header.valid |= NavSolution::kValidAttitude | NavSolution::kValidAttitudeStd | NavSolution::kValidBiases;

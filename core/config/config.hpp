@@ -195,6 +195,10 @@ struct AccelTiltConfig {
 
 struct OutputConfig {
   double rate_hz = 100;  // pose output rate (0 = every IMU sample)
+  // A position correction of at least jump_blend_min_m reaches the output over the time constant
+  // jump_blend_s instead of in one step (filter/output_blend.hpp; 0 s: the output jumps).
+  double jump_blend_s = 0.25;
+  double jump_blend_min_m = 0.1;
 };
 
 // The in-class initialisers above are the DESIGN.md example values; the defaults a loaded config

@@ -33,6 +33,9 @@ constexpr ValueRange kAccelBiasStdMps2{0.0, 100.0, true};
 // the vehicle can reach, or alignment never happens).
 constexpr ValueRange kSpeedMps{0.0, 100.0, true};
 constexpr ValueRange kAny{-kInf, kInf};
+// Jump-free output's time constant: beyond 10 s the output would trail a corrected filter for
+// most of a minute.
+constexpr ValueRange kJumpBlendS{0.0, 10.0};
 // A tick is a fraction of a wheel turn: beyond 10 m per count it is a distance, not a tick
 // (or the count's unit is wrong).
 constexpr ValueRange kTickDistanceM{0.0, 10.0};
@@ -223,6 +226,11 @@ const KeyBinding kKeys[] = {
     NAVFUSE_CONFIG_KEY(accel_tilt.max_deviation_mps2, kAccelStdMps2,
                        "| |specific force| - g | above this: manoeuvring, not used (m/s^2)"),
     NAVFUSE_CONFIG_KEY(output.rate_hz, kNonNegative, "pose output rate (Hz, 0 = every IMU sample)"),
+    NAVFUSE_CONFIG_KEY(output.jump_blend_s, kJumpBlendS,
+                       "a position correction of at least jump_blend_min_m reaches the output over this time "
+                       "constant instead of in one step (s; 0: the output jumps with the filter)"),
+    NAVFUSE_CONFIG_KEY(output.jump_blend_min_m, kNonNegative,
+                       "smallest position correction the output blends (m)"),
 };
 
 #undef NAVFUSE_CONFIG_KEY

@@ -65,6 +65,14 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
   const std::int64_t now = m.header.time_ns;
   c.gnss.latest_fix = m;
   c.gnss.have_fix = true;
+  // RTK fixed after a worse solution: the correction the first fixed position used brings is the
+  // step the output blends (a float solution's bias of decimetres removed at once).
+  if (m.fix == GnssFixType::kRtkFixed && c.gnss.last_fix != GnssFixType::kRtkFixed &&
+      c.gnss.last_fix != GnssFixType::kNone) {
+    c.gnss.blend_next_fixed = true;
+  } else if (m.fix != GnssFixType::kRtkFixed) {
+    c.gnss.blend_next_fixed = false;
+  }
   c.gnss.last_fix = m.fix;
   // This fix and the previous one of its receiver, with the velocity-matching force integral at
   // each, for receivers that report no velocity.
@@ -89,6 +97,7 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
     return FuseResult::ok();
   }
 
+  const NavState before = c.x;  // for the jump-free output (output_blend.hpp)
   Observation obs = gnss_position_observation(
       c.view(shift_s), m, antenna_of_receiver(c.x, o.gnss_secondary_lever_arm_m, m.receiver_id));
   const double std_scale = o.gnss_position_std_scale_for(m.fix);
@@ -96,6 +105,10 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
   const FuseResult r =
       adapt_and_apply(c, o, GatedAid::kGnssPosition, c.adaptation.position_noise, c.adaptation.position, obs, now);
   if (r.used) {
+    if (c.gnss.blend_next_fixed) {
+      blend_position_jump(c, o, before);
+      c.gnss.blend_next_fixed = false;
+    }
     c.gnss.last_position_ns = now;
     c.gnss.position_reject_since_ns = INT64_MIN;
     c.mode.position_known = true;
@@ -106,6 +119,7 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
       sustained_rejection(now, c.gnss.position_reject_since_ns, c.gnss.last_position_ns,
                           o.gnss_recovery_s)) {
     place_at_fix(c, o, m);
+    blend_position_jump(c, o, before);
     // The velocity that carried the filter away is suspect too: widen it so the next velocity
     // fixes pull it in.
     c.ekf.reset_states(sx::kVel, 3, 1.0);
