@@ -60,6 +60,32 @@ bool read_in_chunks(const std::string& path, std::size_t chunk, Feed&& feed, Fin
   return true;
 }
 
+// One pass of a protocol's framer (valid frames counted by `type_of(frame)`) or, with `decode`,
+// of its decoder: the two have the same feed / finish / counters() shape in every front-end.
+template <class Framer, class Decoder, class TypeOf>
+bool frame_once_with(const std::string& path, std::size_t chunk, bool decode, StreamPass& pass, TypeOf type_of) {
+  bool ok = false;
+  if (decode) {
+    Decoder decoder;
+    CountingSink sink;
+    ok = read_in_chunks(
+        path, chunk, [&](std::span<const std::uint8_t> b) { decoder.feed(b, sink); }, [&] { decoder.finish(sink); });
+    pass.measurements = sink.measurements;
+    pass.bytes = decoder.counters().bytes;
+    pass.frames = decoder.counters().frames;
+    pass.bad = decoder.counters().bad_frames;
+    return ok;
+  }
+  Framer framer;
+  auto count = [&](const auto& frame) { ++pass.by_type[type_of(frame)]; };
+  ok = read_in_chunks(
+      path, chunk, [&](std::span<const std::uint8_t> b) { framer.feed(b, count); }, [&] { framer.finish(count); });
+  pass.bytes = framer.counters().bytes;
+  pass.frames = framer.counters().frames;
+  pass.bad = framer.counters().bad_frames;
+  return ok;
+}
+
 struct StreamTool {
   const char* name;
   // The stream (signals: FusionEngine's optional GNSSSignals messages; other tools ignore it).

@@ -7,39 +7,15 @@
 #include "tests/bench/bench_stream_tool.hpp"
 #include "tests/bench/fusionengine_bench_stream.hpp"
 
-namespace {
-
-using namespace navfuse;
-namespace fe = frontends::fusionengine;
-
-bool frame_once(const std::string& path, std::size_t chunk, bool decode, bench::StreamPass& pass) {
-  if (decode) {
-    fe::FusionEngineDecoder decoder;
-    bench::CountingSink sink;
-    const bool ok = bench::read_in_chunks(
-        path, chunk, [&](std::span<const std::uint8_t> b) { decoder.feed(b, sink); }, [&] { decoder.finish(sink); });
-    pass.bytes = decoder.counters().bytes;
-    pass.frames = decoder.counters().frames;
-    pass.bad = decoder.counters().bad_frames;
-    pass.measurements = sink.measurements;
-    return ok;
-  }
-  fe::Framer framer;
-  auto count = [&](const fe::Frame& f) { ++pass.by_type[f.header.message_type]; };
-  const bool ok = bench::read_in_chunks(
-      path, chunk, [&](std::span<const std::uint8_t> b) { framer.feed(b, count); }, [&] { framer.finish(count); });
-  pass.bytes = framer.counters().bytes;
-  pass.frames = framer.counters().frames;
-  pass.bad = framer.counters().bad_frames;
-  return ok;
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
+  using namespace navfuse;
+  namespace fe = frontends::fusionengine;
   const bench::StreamTool tool{
       "navfuse_fe_bench_stream",
       [](bool signals) { return bench::fe_bench_stream(0.01, signals, bench::kCorruptedStreamBytes); },
-      frame_once};
+      [](const std::string& path, std::size_t chunk, bool decode, bench::StreamPass& pass) {
+        return bench::frame_once_with<fe::Framer, fe::FusionEngineDecoder>(
+            path, chunk, decode, pass, [](const fe::Frame& f) { return unsigned{f.header.message_type}; });
+      }};
   return bench::run_stream_tool(tool, argc, argv);
 }

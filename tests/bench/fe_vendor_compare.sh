@@ -25,6 +25,7 @@ set -euo pipefail
 BUILD_DIR=${1:-build/release}
 RUNS=${2:-3}
 here=$(cd "$(dirname "$0")" && pwd)
+source "$here/vendor_compare_lib.sh"
 counter="$here/../frontends/fusionengine/fe_vendor_count.py"
 tool="$BUILD_DIR/tests/bench/navfuse_fe_bench_stream"
 [ -x "$tool" ] || { echo "fe_vendor_compare: $tool not found (build the navfuse_fe_bench_stream target)" >&2; exit 1; }
@@ -51,14 +52,6 @@ stream="$work/fe_corrupted.p1log"
 "$tool" write "$stream" >/dev/null
 echo "stream: $(stat -c %s "$stream") bytes (navfuse_fe_bench's ImuPose stream, 1 % corrupted); $RUNS runs each"
 
-run() {  # name, output file, command...
-  local name=$1 out=$2
-  shift 2
-  "$@" >"$out"
-  printf '%-16s %8s MB/s  median %8s s  valid frames %s\n' "$name" \
-    "$(awk '$1 == "median_s" {print $4}' "$out")" "$(awk '$1 == "median_s" {print $2}' "$out")" \
-    "$(awk '$1 == "frames" {print $2}' "$out")"
-}
 run "navfuse framer" "$work/nf_frame.txt" "$tool" frame "$stream" --runs "$RUNS"
 run "navfuse decoder" "$work/nf_decode.txt" "$tool" frame "$stream" --decode --runs "$RUNS"
 run "vendor decoder" "$work/fe_decoder.txt" "$py" "$counter" "$stream" --runs "$RUNS" --max-payload 65536 --flush
@@ -71,7 +64,6 @@ if [ -n "${FE_VENDOR_DEFAULT_BOUND:-}" ]; then
     "(the rate is over those; up to 16 MiB of them may still wait in its buffer)"
 fi
 
-types() { grep '^type ' "$1"; }
 echo "valid frames per message type (navfuse framer | vendor decoder | vendor index):"
 join -j 2 -a 1 -a 2 -e - -o 0,1.3,2.3 <(types "$work/nf_frame.txt") <(types "$work/fe_decoder.txt") |
   join -a 1 -a 2 -e - -o 0,1.2,1.3,2.2 - <(types "$work/fe_index.txt" | cut -d' ' -f2-) |

@@ -7,38 +7,14 @@
 #include "tests/bench/bench_stream_tool.hpp"
 #include "tests/bench/mip_bench_stream.hpp"
 
-namespace {
-
-using namespace navfuse;
-namespace mip = frontends::mip;
-
-bool frame_once(const std::string& path, std::size_t chunk, bool decode, bench::StreamPass& pass) {
-  if (decode) {
-    mip::MipDecoder decoder;
-    bench::CountingSink sink;
-    const bool ok = bench::read_in_chunks(
-        path, chunk, [&](std::span<const std::uint8_t> b) { decoder.feed(b, sink); }, [&] { decoder.finish(sink); });
-    pass.bytes = decoder.counters().bytes;
-    pass.frames = decoder.counters().frames;
-    pass.bad = decoder.counters().bad_frames;
-    pass.measurements = sink.measurements;
-    return ok;
-  }
-  mip::Framer framer;
-  auto count = [&](const mip::PacketView& p) { ++pass.by_type[p.desc_set]; };
-  const bool ok = bench::read_in_chunks(
-      path, chunk, [&](std::span<const std::uint8_t> b) { framer.feed(b, count); }, [&] { framer.finish(count); });
-  pass.bytes = framer.counters().bytes;
-  pass.frames = framer.counters().frames;
-  pass.bad = framer.counters().bad_frames;
-  return ok;
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
-  const bench::StreamTool tool{"navfuse_mip_bench_stream",
-                               [](bool) { return bench::mip_bench_stream(1, bench::kCorruptedStreamBytes); },
-                               frame_once};
+  using namespace navfuse;
+  namespace mip = frontends::mip;
+  const bench::StreamTool tool{
+      "navfuse_mip_bench_stream", [](bool) { return bench::mip_bench_stream(1, bench::kCorruptedStreamBytes); },
+      [](const std::string& path, std::size_t chunk, bool decode, bench::StreamPass& pass) {
+        return bench::frame_once_with<mip::Framer, mip::MipDecoder>(
+            path, chunk, decode, pass, [](const mip::PacketView& p) { return unsigned{p.desc_set}; });
+      }};
   return bench::run_stream_tool(tool, argc, argv);
 }

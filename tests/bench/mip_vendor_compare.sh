@@ -18,6 +18,7 @@ set -euo pipefail
 BUILD_DIR=${1:-build/release}
 RUNS=${2:-3}
 here=$(cd "$(dirname "$0")" && pwd)
+source "$here/vendor_compare_lib.sh"
 tool="$BUILD_DIR/tests/bench/navfuse_mip_bench_stream"
 [ -x "$tool" ] || { echo "mip_vendor_compare: $tool not found (build the navfuse_mip_bench_stream target)" >&2; exit 1; }
 work=$(mktemp -d)
@@ -50,19 +51,10 @@ stream="$work/mip_corrupted.bin"
 "$tool" write "$stream" >/dev/null
 echo "stream: $(stat -c %s "$stream") bytes (navfuse_mip_bench's CV7-style stream, 1 % corrupted); $RUNS runs each"
 
-run() {  # name, output file, command...
-  local name=$1 out=$2
-  shift 2
-  "$@" >"$out"
-  printf '%-16s %8s MB/s  median %8s s  valid packets %s\n' "$name" \
-    "$(awk '$1 == "median_s" {print $4}' "$out")" "$(awk '$1 == "median_s" {print $2}' "$out")" \
-    "$(awk '$1 == "frames" {print $2}' "$out")"
-}
 run "navfuse framer" "$work/nf_frame.txt" "$tool" frame "$stream" --runs "$RUNS"
 run "navfuse decoder" "$work/nf_decode.txt" "$tool" frame "$stream" --decode --runs "$RUNS"
 run "vendor parser" "$work/vendor.txt" "$work/mip_vendor_count" "$stream" "$RUNS"
 
-types() { grep '^type ' "$1"; }
 echo "valid packets per descriptor set (navfuse framer | vendor parser):"
 join -j 2 -a 1 -a 2 -e - -o 0,1.3,2.3 <(types "$work/nf_frame.txt") <(types "$work/vendor.txt") |
   awk '{printf "  set 0x%02x %9s | %9s\n", $1, $2, $3}'
