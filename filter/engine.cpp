@@ -261,6 +261,7 @@ const FilterStats& Engine::stats() const {
   stats_view_.accel_tilt_updates = core_.tilt.updates;
   stats_view_.nhc_updates = core_.mode.nhc_updates;
   stats_view_.covariance_inflations = core_.adaptation.inflations;
+  stats_view_.output_jumps_blended = core_.output_blend.jumps_blended;
   stats_view_.process_noise_scale = core_.adaptation.process_noise_scale;
   stats_view_.max_process_noise_scale = core_.adaptation.max_process_noise_scale;
   stats_view_.max_gnss_position_noise_scale = core_.adaptation.position_noise.max_scale;

@@ -64,6 +64,7 @@ struct FilterStats {
   std::uint64_t accel_tilt_updates = 0;  // gravity-reference updates applied (control/tilt_control.hpp)
   std::uint64_t nhc_updates = 0;     // non-holonomic constraint updates applied
   std::uint64_t covariance_inflations = 0;  // over-confidence repaired (innovation_adaptation)
+  std::uint64_t output_jumps_blended = 0;   // position corrections the output took gradually (output_blend)
   double process_noise_scale = 1.0;         // current adaptive multiplier on the random walks
   double max_process_noise_scale = 1.0;     // largest it reached
   // Largest multiplier put on the GNSS position / velocity variances as reported

@@ -59,7 +59,8 @@ nlohmann::ordered_json Summary::to_json(bool decode_only) const {
                    {"max_process_noise_scale", adaptation->max_process_noise_scale},
                    {"gnss_recoveries", adaptation->gnss_recoveries},
                    {"max_gnss_position_noise_scale", adaptation->max_gnss_position_noise_scale},
-                   {"max_gnss_velocity_noise_scale", adaptation->max_gnss_velocity_noise_scale}};
+                   {"max_gnss_velocity_noise_scale", adaptation->max_gnss_velocity_noise_scale},
+                   {"output_jumps_blended", adaptation->output_jumps_blended}};
   }
   if (!calibration.empty() && !decode_only) {
     nlohmann::ordered_json c = nlohmann::ordered_json::object();
@@ -140,14 +141,17 @@ void Summary::print_innovations(std::ostream& os) const {
   }
   if (adaptation && (adaptation->covariance_inflations > 0 || adaptation->max_process_noise_scale > 1.0 ||
                      adaptation->gnss_recoveries > 0 || adaptation->max_gnss_position_noise_scale > 1.0 ||
-                     adaptation->max_gnss_velocity_noise_scale > 1.0)) {
+                     adaptation->max_gnss_velocity_noise_scale > 1.0 || adaptation->output_jumps_blended > 0)) {
     os << "filter adaptation: " << adaptation->covariance_inflations << " covariance re-inflations, "
        << adaptation->gnss_recoveries << " GNSS re-anchors; process noise scale " << std::fixed
        << std::setprecision(2) << adaptation->process_noise_scale << " at the end (max "
        << adaptation->max_process_noise_scale << "); GNSS variances scaled up to "
        << adaptation->max_gnss_position_noise_scale << "x (position), " << adaptation->max_gnss_velocity_noise_scale
-       << "x (velocity)\n"
-       << std::defaultfloat;
+       << "x (velocity)";
+    if (adaptation->output_jumps_blended > 0) {
+      os << "; " << adaptation->output_jumps_blended << " position corrections blended into the output";
+    }
+    os << "\n" << std::defaultfloat;
   }
 }
 

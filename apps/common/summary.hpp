@@ -5,7 +5,7 @@
 // run {wall_s, imu_samples_per_s, modes_reached}. Added beside them: measurements.KIND.innovation
 // {count, mean_nis, mean_nis_per_dim, fraction_above_gate}, measurements.KIND.pending_at_end,
 // filter {covariance_inflations, process_noise_scale, max_process_noise_scale, gnss_recoveries,
-//         max_gnss_position_noise_scale, max_gnss_velocity_noise_scale}
+//         max_gnss_position_noise_scale, max_gnss_velocity_noise_scale, output_jumps_blended}
 // and calibration {the CSV's calibration column names: value} at the end of the run.
 #pragma once
 
@@ -56,6 +56,9 @@ struct AdaptationSummary {
   // Largest multipliers on the reported GNSS variances (control/measurement_noise_adaptation.hpp).
   double max_gnss_position_noise_scale = 1.0;
   double max_gnss_velocity_noise_scale = 1.0;
+  // Position corrections the output took over output.jump_blend_s instead of at once
+  // (filter/output_blend.hpp).
+  std::uint64_t output_jumps_blended = 0;
 };
 
 struct RunStats {

@@ -31,7 +31,8 @@ void fill_measurement_counts(const filter::Engine& engine, const MeasurementCoun
   summary.adaptation =
       AdaptationSummary{stats.covariance_inflations,          stats.process_noise_scale,
                         stats.max_process_noise_scale,        stats.gnss_recoveries,
-                        stats.max_gnss_position_noise_scale, stats.max_gnss_velocity_noise_scale};
+                        stats.max_gnss_position_noise_scale, stats.max_gnss_velocity_noise_scale,
+                        stats.output_jumps_blended};
 }
 
 }  // namespace navfuse::apps

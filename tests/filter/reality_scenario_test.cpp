@@ -222,6 +222,9 @@ TEST(RealityScenario, RtkFixChangesKeepCentimetresWhenFixedAndDoNotJump) {
     EXPECT_LE(err_after, 0.05) << t_fix;
   }
   EXPECT_EQ(transitions, 5);
+  // The three re-fixes that remove decimetres were blended; the two of 5-8 cm are below
+  // output.jump_blend_min_m and pass straight through.
+  EXPECT_EQ(tr.summary.stats.output_jumps_blended, 3u);
 }
 
 TEST(RealityScenario, UrbanMultipathKeepsTheRtkGoal) {
