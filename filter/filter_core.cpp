@@ -182,6 +182,7 @@ FuseResult FilterCore::apply(const FilterOptions& o, const Observation& obs, dou
   std::optional<NavState> before;
   if (record.sink != nullptr) before = x;
   inject_error(x, r.dx);
+  gnss.jump.corrections_ned_m -= r.dx.segment<3>(sx::kPos);  // dx is estimate minus truth
   ekf.guard(variance_floor);
   if (before) record_update(*this, *before, obs, r);
   return out;

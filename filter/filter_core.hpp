@@ -11,6 +11,7 @@
 
 #include "core/measurements/measurements.hpp"
 #include "filter/output_blend.hpp"
+#include "filter/control/gnss_jump_check.hpp"
 #include "filter/control/innovation_adaptation.hpp"
 #include "filter/ekf.hpp"
 #include "filter/filter_options.hpp"
@@ -111,6 +112,7 @@ struct GnssControlState {
     Eigen::Vector2d force_integral_mps = Eigen::Vector2d::Zero();
   };
   std::optional<PairedFix> previous_primary_fix;
+  GnssJumpState jump;  // steps of the primary receiver's fixes (control/gnss_jump_check.hpp)
 };
 
 // The latest count of one tick stream (input stream and channel count), kept to difference the

@@ -60,6 +60,9 @@ FilterOptions options_from_config(const navfuse::config::Config& config) {
   o.gnss_velocity_std_scale = g.velocity_std_scale;
   o.gnss_timeout_s = g.timeout_s;
   o.gnss_recovery_s = g.recovery_s;
+  o.gnss_jump_hold_s = g.jump_hold_s;
+  o.gnss_jump_min_m = g.jump_min_m;
+  o.gnss_jump_gate = config.gates.gnss_jump;
   o.output_jump_blend_s = config.output.jump_blend_s;
   o.output_jump_blend_min_m = config.output.jump_blend_min_m;
   const auto& gates = config.gates;

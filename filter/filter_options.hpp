@@ -162,6 +162,15 @@ struct FilterOptions {
   // GNSS control.
   double gnss_timeout_s = 2.0;   // no position aiding for longer: dead reckoning
   double gnss_recovery_s = 3.0;  // sustained rejection for longer: re-anchor to GNSS
+  // Steps between consecutive fixes (control/gnss_jump_check.hpp): the chi-square test of a step
+  // against the inertial track, and how long the fixes after one are held out at most (0: off).
+  double gnss_jump_gate = 30.0;
+  double gnss_jump_hold_s = 10.0;
+  // Smaller steps are not held out: following one costs no more than its size, and a turn of a
+  // vibrating car with positions-only fixes makes 5 cm steps now and then (parking_drive). A
+  // wrong RTK ambiguity moves the fix by about a carrier wavelength (19 cm at L1), multipath by
+  // decimetres to metres.
+  double gnss_jump_min_m = 0.1;
   // Jump-free position output (output_blend.hpp): a correction of at least `_min_m` reaches the
   // output over this time constant (0: the output jumps with the filter).
   double output_jump_blend_s = 0.25;

@@ -20,6 +20,7 @@ std::string_view to_string(RejectReason reason) {
     case RejectReason::kBaselineMismatch: return "baseline_mismatch";
     case RejectReason::kMagneticDisturbance: return "magnetic_disturbance";
     case RejectReason::kNoDeclination: return "no_declination";
+    case RejectReason::kGnssJump: return "gnss_jump";
     case RejectReason::kCount: break;
   }
   return "unknown";

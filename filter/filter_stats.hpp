@@ -27,6 +27,7 @@ enum class RejectReason : std::uint8_t {
   kBaselineMismatch,  // dual-antenna heading after its baseline was found off the course over ground
   kMagneticDisturbance,  // a magnetometer reading whose strength is not the earth's field
   kNoDeclination,     // magnetic heading with no declination configured or modelled
+  kGnssJump,          // a GNSS fix displaced by a step away from the inertial track (multipath, wrong fix)
   kCount,
 };
 std::string_view to_string(RejectReason reason);

@@ -70,6 +70,10 @@ struct GnssConfig {
   double velocity_std_scale = 1.0;
   double timeout_s = 2.0;   // no position aiding for longer: dead reckoning
   double recovery_s = 3.0;  // fixes rejected for longer: re-anchor to GNSS
+  // Fixes that stepped away from the inertial track (multipath, a wrong RTK fix) are rejected
+  // until they return to it, for at most this long (s; 0: no step check).
+  double jump_hold_s = 10.0;
+  double jump_min_m = 0.1;  // smaller steps are not held out
   bool estimate_lever_arm = false;  // primary antenna lever arm as a state
   double initial_lever_arm_std_m = 0.1;
   // The GNSS-to-IMU time offset left after time_offset_s, as a state (a rig whose latency is not
@@ -136,6 +140,9 @@ struct GatesConfig {
   double chi2_1d = 15.14;
   double chi2_2d = 18.42;
   double chi2_3d = 21.11;
+  // The step between consecutive GNSS fixes of one fix type against the inertial track
+  // (filter/control/gnss_jump_check.hpp): about the 1e-6 tail of chi-square(3).
+  double gnss_jump = 30.0;
   // A chi-square gate of its own per aiding source, for every update of it whatever its rows
   // (unset: by dimension above). A receiver known to report multipath-free fixes can be held to a
   // tighter gate than the odometer, or a noisy external aid given a looser one.

@@ -68,6 +68,9 @@ constexpr ValueRange kShortSpanS{0.0, 10.0, true};
 constexpr ValueRange kLatencyS{0.0, 10.0};  // 0: no re-propagation of late measurements
 // GNSS loss and levelling timeouts: above 0, at most 10 minutes.
 constexpr ValueRange kTimeoutS{0.0, 600.0, true};
+constexpr ValueRange kHoldS{0.0, 600.0};  // 0: off
+// A GNSS step worth holding fixes out for: at most 100 m (beyond it no multipath reaches).
+constexpr ValueRange kJumpM{0.0, 100.0};
 // Gyro threshold for "stationary": at most 10 rad/s (a spinning wheel).
 constexpr ValueRange kRateRadS{0.0, 10.0, true};
 constexpr ValueRange kAccelStdMps2{0.0, 100.0, true};
@@ -133,6 +136,10 @@ const KeyBinding kKeys[] = {
     NAVFUSE_CONFIG_KEY(gnss.timeout_s, kTimeoutS, "no position aiding for longer: dead reckoning (s)"),
     NAVFUSE_CONFIG_KEY(gnss.recovery_s, kTimeoutS,
                        "every fix rejected for longer: re-anchor the position to GNSS (s)"),
+    NAVFUSE_CONFIG_KEY(gnss.jump_hold_s, kHoldS,
+                       "fixes that stepped away from the inertial track (multipath, a wrong RTK fix) are "
+                       "rejected until they return to it, for at most this long (s; 0: no step check)"),
+    NAVFUSE_CONFIG_KEY(gnss.jump_min_m, kJumpM, "smaller steps between fixes are not held out (m)"),
     NAVFUSE_CONFIG_KEY(gnss.estimate_lever_arm, kAny, "estimate the primary antenna lever arm (true | false)"),
     NAVFUSE_CONFIG_KEY(gnss.initial_lever_arm_std_m, kLeverArmStdM, "lever arm prior per axis, 1 sigma (m)"),
     NAVFUSE_CONFIG_KEY(gnss.estimate_time_offset, kAny,
@@ -185,6 +192,9 @@ const KeyBinding kKeys[] = {
     NAVFUSE_CONFIG_KEY(gates.chi2_1d, kChi2, "chi-square gate of 1-D updates (speed, heading, ...)"),
     NAVFUSE_CONFIG_KEY(gates.chi2_2d, kChi2, "chi-square gate of 2-D updates (NHC, ...)"),
     NAVFUSE_CONFIG_KEY(gates.chi2_3d, kChi2, "chi-square gate of 3-D updates (GNSS position, velocity, ZUPT)"),
+    NAVFUSE_CONFIG_KEY(gates.gnss_jump, kChi2,
+                       "chi-square test of the step between consecutive GNSS fixes of one fix type against "
+                       "the inertial track"),
     NAVFUSE_CONFIG_KEY(gates.gnss_position, kChi2, "chi-square gate of GNSS position updates (~: chi2_3d)"),
     NAVFUSE_CONFIG_KEY(gates.gnss_velocity, kChi2, "chi-square gate of GNSS velocity updates (~: chi2_3d)"),
     NAVFUSE_CONFIG_KEY(gates.gnss_heading, kChi2, "chi-square gate of dual-antenna heading updates (~: chi2_1d)"),

@@ -8,6 +8,7 @@
 #include "core/rotation/rotation.hpp"
 #include "filter/alignment.hpp"
 #include "filter/control/baseline_check.hpp"
+#include "filter/control/gnss_jump_check.hpp"
 #include "filter/control/gnss_heading_alignment.hpp"
 #include "filter/measurements/gnss_heading.hpp"
 #include "filter/measurements/gnss_position.hpp"
@@ -102,8 +103,24 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
       c.view(shift_s), m, antenna_of_receiver(c.x, o.gnss_secondary_lever_arm_m, m.receiver_id));
   const double std_scale = o.gnss_position_std_scale_for(m.fix);
   obs.r *= std_scale * std_scale;
+  // A step away from the inertial track (gnss_jump_check.hpp): rejected before either adaptation
+  // can take it for a filter that drifted. Primary receiver only: its fixes are compared in turn.
+  const JumpVerdict jump = m.receiver_id == 0 ? check_gnss_jump(c, o, m, obs) : JumpVerdict::kClean;
+  if (jump == JumpVerdict::kDisplaced) {
+    obs.r *= c.adaptation.position_noise.scale;
+    note_processed_fix(c, m, obs);
+    return FuseResult::reject(RejectReason::kGnssJump);
+  }
   const FuseResult r =
       adapt_and_apply(c, o, GatedAid::kGnssPosition, c.adaptation.position_noise, c.adaptation.position, obs, now);
+  // What the next fix's step is measured from: this fix against the state after it (updated,
+  // gated or re-anchored below), with the R it was held to.
+  const auto remember_fix = [&] {
+    if (m.receiver_id != 0) return;
+    Observation post = gnss_position_observation(c.view(shift_s), m, antenna_of_receiver(c.x, {}, 0));
+    post.r = obs.r;
+    note_processed_fix(c, m, post);
+  };
   if (r.used) {
     if (c.gnss.blend_next_fixed) {
       blend_position_jump(c, o, before);
@@ -113,11 +130,12 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
     c.gnss.position_reject_since_ns = INT64_MIN;
     c.mode.position_known = true;
     c.mode.last_absolute_position_ns = now;
+    remember_fix();
     return r;
   }
   if (r.reason == RejectReason::kChi2Gate &&
-      sustained_rejection(now, c.gnss.position_reject_since_ns, c.gnss.last_position_ns,
-                          o.gnss_recovery_s)) {
+      (jump == JumpVerdict::kHeldTooLong ||
+       sustained_rejection(now, c.gnss.position_reject_since_ns, c.gnss.last_position_ns, o.gnss_recovery_s))) {
     place_at_fix(c, o, m);
     blend_position_jump(c, o, before);
     // The velocity that carried the filter away is suspect too: widen it so the next velocity
@@ -126,8 +144,10 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const GnssPosition& m,
     c.gnss.last_position_ns = now;
     c.gnss.position_reject_since_ns = INT64_MIN;
     ++c.mode.gnss_recoveries;
+    remember_fix();
     return FuseResult::ok();
   }
+  remember_fix();
   return r;
 }
 

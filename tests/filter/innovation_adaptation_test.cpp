@@ -10,13 +10,10 @@
 #include "core/rotation/rotation.hpp"
 #include "filter/control/innovation_adaptation.hpp"
 #include "filter/engine.hpp"
-#include "tests/filter/line_trajectory.hpp"
+#include "tests/filter/standing_fixes.hpp"
 
 namespace navfuse::filter {
 namespace {
-
-constexpr double kLat = 40.0 * rot::kDegToRad;
-const Eigen::Vector3d kRpy = Eigen::Vector3d(1.0, -2.0, 60.0) * rot::kDegToRad;
 
 TEST(InnovationWindow, MedianOfRecentSamplesOnly) {
   InnovationWindow w;
@@ -51,71 +48,55 @@ TEST(InnovationWindow, LargeResidualsMustAgree) {
   EXPECT_FALSE(glitches.recent_medians(s, 1.0, 3, 3.0)->residuals_agree);
 }
 
-// Standing still with a known heading, RTK-like fixes (2 cm) at 5 Hz for 30 s; from 20 s on the
-// fixes are `step_m` north of the truth (a new base station, a datum change), and the fix at
-// `outlier_s` (if > 0) is 10 m off once.
-struct Outcome {
-  std::uint64_t gated = 0;
-  std::uint64_t inflations = 0;
-  std::uint64_t recoveries = 0;
-  double process_noise_scale = 0.0;  // at the end
-  double final_north_m = 0.0;  // estimate minus truth
-};
-
-Outcome run(double step_m, double outlier_s, bool adaptation) {
+// The standing stream of standing_fixes.hpp for 30 s: from 20 s on the fixes are `change_m`
+// north of the truth, reached over `ramp_s` (0: in one step); the fix at `outlier_s` (if > 0) is
+// 10 m off once.
+test::StandingOutcome run(double change_m, double outlier_s, bool adaptation, double ramp_s = 0.0,
+                          double jump_hold_s = FilterOptions{}.gnss_jump_hold_s) {
   FilterOptions o;
-  o.initial_heading_rad = kRpy.z();
   o.adaptation.enabled = adaptation;
-  Engine e{o};
-  test::LineTrajectory traj({kLat, 0.2, 100.0}, Eigen::Vector3d::Zero(), kRpy, 200.0);
-  std::mt19937_64 rng(11);
-  for (int k = 1; k <= 30 * 200; ++k) {
-    e.process(traj.next());
-    if (k % 40 != 0) continue;
-    const double t = k / 200.0;
-    GnssPosition fix = test::make_fix(traj.truth(), Eigen::Vector3d::Zero(), 0.02, &rng);
-    fix.fix = GnssFixType::kRtkFixed;
-    double north = t >= 20.0 ? step_m : 0.0;
+  o.gnss_jump_hold_s = jump_hold_s;
+  return test::run_standing(o, 30.0, [&](double t) {
+    double north = t < 20.0 ? 0.0 : ramp_s > 0.0 ? change_m * std::min(1.0, (t - 20.0) / ramp_s) : change_m;
     if (outlier_s > 0.0 && std::abs(t - outlier_s) < 1e-9) north += 10.0;
-    const geo::Llh moved = geo::llh_offset({fix.lat_rad, fix.lon_rad, fix.height_m}, Eigen::Vector3d(north, 0, 0));
-    fix.lat_rad = moved.lat_rad;
-    e.process(Measurement{fix});
-  }
-  Outcome out;
-  const FilterStats stats = e.stats();
-  out.gated = stats.of(MeasurementKind::kGnssPosition).rejected_for(RejectReason::kChi2Gate);
-  out.inflations = stats.covariance_inflations;
-  out.recoveries = stats.gnss_recoveries;
-  out.process_noise_scale = stats.process_noise_scale;
-  out.final_north_m = geo::ned_offset_m(traj.truth().llh, {e.solution().lat_rad, e.solution().lon_rad,
-                                                           e.solution().height_m}).x();
-  return out;
+    return north;
+  });
 }
 
+// An overconfident filter: what it holds still, the fixes show moving away (0.5 m in 2 s, steps
+// of 5 cm between fixes, none a jump). It must notice within a second and follow.
 TEST(InnovationAdaptation, PersistentChangeIsTakenWithinASecond) {
-  const Outcome with = run(0.5, 0.0, true);
+  const test::StandingOutcome with = run(0.5, 0.0, true, 2.0);
   // At 5 Hz the window holds 3 disagreeing fixes after 0.4 s: at most those are gated.
   EXPECT_LE(with.gated, 3u);
+  EXPECT_EQ(with.jumps, 0u);
   EXPECT_GE(with.inflations, 1u);
   EXPECT_EQ(with.recoveries, 0u);
   EXPECT_NEAR(with.final_north_m, 0.5, 0.05);
   // Without adaptation the same stream is rejected for gnss_recovery_s (3 s) until a re-anchor.
-  const Outcome without = run(0.5, 0.0, false);
+  const test::StandingOutcome without = run(0.5, 0.0, false, 2.0);
   EXPECT_GE(without.gated, 10u);
   EXPECT_GE(without.recoveries, 1u);
+  // A 0.5 m step in one epoch is taken as quickly when the step check is off (gnss.jump_hold_s
+  // 0); with it, gnss_jump_check_test.cpp.
+  const test::StandingOutcome step = run(0.5, 0.0, true, 0.0, 0.0);
+  EXPECT_LE(step.gated, 3u);
+  EXPECT_GE(step.inflations, 1u);
+  EXPECT_NEAR(step.final_north_m, 0.5, 0.05);
 }
 
 TEST(InnovationAdaptation, LoneOutlierIsRejectedAndChangesNothing) {
-  const Outcome r = run(0.0, 12.0, true);
-  EXPECT_EQ(r.gated, 1u);
+  const test::StandingOutcome r = run(0.0, 12.0, true);
+  EXPECT_EQ(r.gated + r.jumps, 1u);  // a 10 m step from the previous fix: rejected as gnss_jump
   EXPECT_EQ(r.inflations, 0u);
   EXPECT_NEAR(r.final_north_m, 0.0, 0.03);
 }
 
 TEST(InnovationAdaptation, ConsistentFilterKeepsTheDataSheetNoise) {
-  const Outcome r = run(0.0, 0.0, true);
+  const test::StandingOutcome r = run(0.0, 0.0, true);
   EXPECT_EQ(r.inflations, 0u);
   EXPECT_EQ(r.gated, 0u);
+  EXPECT_EQ(r.jumps, 0u);
   // The start (levelling, the first fixes) may raise it; consistent innovations bring it back.
   EXPECT_LT(r.process_noise_scale, 1.5);
 }
