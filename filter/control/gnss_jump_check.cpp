@@ -45,6 +45,68 @@ double step_nis(const Observation::Residual& d, const Observation::Noise& s) {
   return d.dot(x);
 }
 
+// The step from the previous fix to this one, over the rows both have (a fix without height has
+// two), with the covariance it is judged by and the stream's own scale.
+struct Step {
+  Observation::Residual d;
+  Observation::Noise s;
+  double scale = 1.0;   // the recent ordinary steps' median over chi-square's, >= 1
+  bool flagged = false;  // beyond gates.gnss_jump (after the scale) and gnss.jump_min_m
+  int rows() const { return static_cast<int>(d.size()); }
+  // v^T S^-1 v / scale over the step's rows.
+  double nis_of(const Eigen::Vector3d& v, const Observation::Noise& cov) const {
+    const Observation::Residual head = v.head(rows());
+    return step_nis(head, cov) / scale;
+  }
+};
+
+// Measures the step of `probe` (the fix with the R its update would use) from the previous fix
+// `dt_s` earlier; an ordinary one joins the window that sets the scale.
+Step measure_step(GnssJumpState& j, const FilterOptions& o, const Ekf& ekf, const Observation& probe, double dt_s) {
+  Step st;
+  const int rows = std::min<int>(probe.rows(), static_cast<int>(j.previous_post_fit.size()));
+  st.d = probe.residual.head(rows) - j.corrections_ned_m.head(rows) - j.previous_post_fit.head(rows);
+  st.s = probe.r.topLeftCorner(rows, rows) + j.previous_r.topLeftCorner(rows, rows) +
+         dt_s * dt_s * ekf.p.block(sx::kVel, sx::kVel, rows, rows);
+  const double per_dim = step_nis(st.d, st.s) / rows;
+  st.scale = std::max(1.0, recent_median(j) / chi2_median_per_dim(rows));
+  st.flagged = j.recent_count >= GnssJumpState::kMinSamples && per_dim * rows / st.scale > o.gnss_jump_gate &&
+               st.d.norm() >= o.gnss_jump_min_m;
+  if (!st.flagged && std::isfinite(per_dim)) push_step(j, per_dim);
+  return st;
+}
+
+// While displaced: the fixes since the step must keep their offset against the inertial track.
+// Back to where the stream was (what it moved since the step undone to within the gate) ends the
+// displacement: the receiver came back. A stream that keeps moving against the track (the sum of
+// the steps since beyond the gate, with the velocity's uncertainty over the whole time) is not a
+// step but a filter drifting off it, which is the adaptation's to repair. Another step that is
+// neither is held one fix: a glitch is undone by the next one and counts for nothing.
+JumpVerdict follow_displacement(GnssJumpState& j, const FilterOptions& o, const Ekf& ekf, const Observation& probe,
+                                const Step& st, std::int64_t now) {
+  const Eigen::Vector3d d = padded(st.d);
+  if (j.pending_ned_m) {
+    const bool undone = st.nis_of(*j.pending_ned_m + d, st.s) <= o.gnss_jump_gate;
+    if (!undone) j.drift_ned_m += *j.pending_ned_m + d;
+    j.pending_ned_m.reset();
+  } else if (st.flagged && st.nis_of(j.displacement_ned_m + j.drift_ned_m + d, st.s) > o.gnss_jump_gate) {
+    j.pending_ned_m = d;
+    return JumpVerdict::kDisplaced;
+  } else {
+    j.drift_ned_m += d;
+  }
+  const int rows = st.rows();
+  const double since_s = seconds_since(now, j.displaced_since_ns);
+  const Observation::Noise s_drift = probe.r.topLeftCorner(rows, rows) + j.previous_r.topLeftCorner(rows, rows) +
+                                     since_s * since_s * ekf.p.block(sx::kVel, sx::kVel, rows, rows);
+  if (st.nis_of(j.displacement_ned_m + j.drift_ned_m, st.s) <= o.gnss_jump_gate ||
+      st.nis_of(j.drift_ned_m, s_drift) > o.gnss_jump_gate) {
+    j.displaced_since_ns = INT64_MIN;
+    return JumpVerdict::kClean;
+  }
+  return JumpVerdict::kDisplaced;
+}
+
 }  // namespace
 
 JumpVerdict check_gnss_jump(FilterCore& c, const FilterOptions& o, const GnssPosition& m, const Observation& obs) {
@@ -62,68 +124,19 @@ JumpVerdict check_gnss_jump(FilterCore& c, const FilterOptions& o, const GnssPos
   Observation probe = obs;
   probe.r *= c.adaptation.position_noise.scale;
   const bool fits_filter = c.ekf.innovation_moments(probe).nis <= o.gate_for(GatedAid::kGnssPosition, probe.rows());
-
-  // The step from the previous fix, over the rows both have (a fix without height has two), its
-  // normalised square against the stream's own scale.
-  bool step = false;
-  Observation::Residual d;
-  Observation::Noise s;
-  double scale = 1.0;
-  if (comparable) {
-    const int rows = std::min<int>(probe.rows(), static_cast<int>(j.previous_post_fit.size()));
-    d = probe.residual.head(rows) - j.corrections_ned_m.head(rows) - j.previous_post_fit.head(rows);
-    s = probe.r.topLeftCorner(rows, rows) + j.previous_r.topLeftCorner(rows, rows) +
-        dt_s * dt_s * c.ekf.p.block(sx::kVel, sx::kVel, rows, rows);
-    const double per_dim = step_nis(d, s) / rows;
-    scale = std::max(1.0, recent_median(j) / chi2_median_per_dim(rows));
-    step = j.recent_count >= GnssJumpState::kMinSamples && per_dim * rows / scale > o.gnss_jump_gate &&
-           d.norm() >= o.gnss_jump_min_m;
-    if (!step && std::isfinite(per_dim)) push_step(j, per_dim);
-  }
+  const Step st = comparable ? measure_step(j, o, c.ekf, probe, dt_s) : Step{};
 
   if (fits_filter || !comparable) {
     j.displaced_since_ns = INT64_MIN;
     return JumpVerdict::kClean;
   }
   if (held_too_long) return JumpVerdict::kHeldTooLong;
-  const Eigen::Vector3d d3 = padded(d);
-  const int rows = static_cast<int>(d.size());
-  if (!j.displaced()) {
-    if (!step) return JumpVerdict::kClean;
-    j.displaced_since_ns = now;
-    j.displacement_ned_m = d3;
-    j.drift_ned_m.setZero();
-    j.pending_ned_m.reset();
-    return JumpVerdict::kDisplaced;
-  }
-  // Displaced: the fixes since the step must keep their offset against the inertial track. Back
-  // to where the stream was (what it moved since the step undone to within the gate) ends the
-  // displacement: the receiver came back. A stream that keeps moving against the track (the sum
-  // of the steps since beyond the gate, with the velocity's uncertainty over the whole time) is
-  // not a step but a filter drifting off it, which is the adaptation's to repair. Another step
-  // that is neither is held one fix: a glitch is undone by the next one and counts for nothing.
-  const auto nis_of = [&](const Eigen::Vector3d& v, const Observation::Noise& cov) {
-    const Observation::Residual head = v.head(rows);
-    return step_nis(head, cov) / scale;
-  };
-  if (j.pending_ned_m) {
-    const bool undone = nis_of(*j.pending_ned_m + d3, s) <= o.gnss_jump_gate;
-    if (!undone) j.drift_ned_m += *j.pending_ned_m + d3;
-    j.pending_ned_m.reset();
-  } else if (step && nis_of(j.displacement_ned_m + j.drift_ned_m + d3, s) > o.gnss_jump_gate) {
-    j.pending_ned_m = d3;
-    return JumpVerdict::kDisplaced;
-  } else {
-    j.drift_ned_m += d3;
-  }
-  const double since_s = seconds_since(now, j.displaced_since_ns);
-  const Observation::Noise s_drift = probe.r.topLeftCorner(rows, rows) + j.previous_r.topLeftCorner(rows, rows) +
-                                     since_s * since_s * c.ekf.p.block(sx::kVel, sx::kVel, rows, rows);
-  if (nis_of(j.displacement_ned_m + j.drift_ned_m, s) <= o.gnss_jump_gate ||
-      nis_of(j.drift_ned_m, s_drift) > o.gnss_jump_gate) {
-    j.displaced_since_ns = INT64_MIN;
-    return JumpVerdict::kClean;
-  }
+  if (j.displaced()) return follow_displacement(j, o, c.ekf, probe, st, now);
+  if (!st.flagged) return JumpVerdict::kClean;
+  j.displaced_since_ns = now;
+  j.displacement_ned_m = padded(st.d);
+  j.drift_ned_m.setZero();
+  j.pending_ned_m.reset();
   return JumpVerdict::kDisplaced;
 }
 
