@@ -61,7 +61,8 @@ struct Step {
 };
 
 // Measures the step of `probe` (the fix with the R its update would use) from the previous fix
-// `dt_s` earlier; an ordinary one joins the window that sets the scale.
+// `dt_s` earlier; an ordinary one joins the window that sets the scale. The scale (a median) is
+// taken only where it can matter: for a step the gate would flag at scale 1, or while displaced.
 Step measure_step(GnssJumpState& j, const FilterOptions& o, const Ekf& ekf, const Observation& probe, double dt_s) {
   Step st;
   const int rows = std::min<int>(probe.rows(), static_cast<int>(j.previous_post_fit.size()));
@@ -69,7 +70,9 @@ Step measure_step(GnssJumpState& j, const FilterOptions& o, const Ekf& ekf, cons
   st.s = probe.r.topLeftCorner(rows, rows) + j.previous_r.topLeftCorner(rows, rows) +
          dt_s * dt_s * ekf.p.block(sx::kVel, sx::kVel, rows, rows);
   const double per_dim = step_nis(st.d, st.s) / rows;
-  st.scale = std::max(1.0, recent_median(j) / chi2_median_per_dim(rows));
+  if (per_dim * rows > o.gnss_jump_gate || j.displaced()) {
+    st.scale = std::max(1.0, recent_median(j) / chi2_median_per_dim(rows));
+  }
   st.flagged = j.recent_count >= GnssJumpState::kMinSamples && per_dim * rows / st.scale > o.gnss_jump_gate &&
                st.d.norm() >= o.gnss_jump_min_m;
   if (!st.flagged && std::isfinite(per_dim)) push_step(j, per_dim);
@@ -116,18 +119,21 @@ JumpVerdict check_gnss_jump(FilterCore& c, const FilterOptions& o, const GnssPos
   const double dt_s = j.have_previous ? static_cast<double>(now - j.previous_ns) * 1e-9 : INFINITY;
   const bool comparable = j.have_previous && m.fix == j.previous_fix && dt_s > 0.0 &&
                           dt_s <= GnssJumpState::kMaxInterval_s;
-  const bool held_too_long = j.displaced() && seconds_since(now, j.displaced_since_ns) > o.gnss_jump_hold_s;
-  if (!comparable || held_too_long) j.displaced_since_ns = INT64_MIN;  // a new solution, or held long enough
-
-  // The fix against the filter, with the R its update would be held to.
-  c.flush_covariance(o);
-  Observation probe = obs;
-  probe.r *= c.adaptation.position_noise.scale;
-  const bool fits_filter = c.ekf.innovation_moments(probe).nis <= o.gate_for(GatedAid::kGnssPosition, probe.rows());
-  const Step st = comparable ? measure_step(j, o, c.ekf, probe, dt_s) : Step{};
-
-  if (fits_filter || !comparable) {
+  if (!comparable) {  // a new solution, or the first fix in a while: nothing to compare with
     j.displaced_since_ns = INT64_MIN;
+    return JumpVerdict::kClean;
+  }
+  const bool held_too_long = j.displaced() && seconds_since(now, j.displaced_since_ns) > o.gnss_jump_hold_s;
+  if (held_too_long) j.displaced_since_ns = INT64_MIN;
+
+  c.flush_covariance(o);
+  Observation probe = obs;  // with the R its update would be held to
+  probe.r *= c.adaptation.position_noise.scale;
+  const Step st = measure_step(j, o, c.ekf, probe, dt_s);
+  // Nothing in force and no step: the common case, decided without the fix's own innovation.
+  if (!j.displaced() && !held_too_long && !st.flagged) return JumpVerdict::kClean;
+  if (c.ekf.innovation_moments(probe).nis <= o.gate_for(GatedAid::kGnssPosition, probe.rows())) {
+    j.displaced_since_ns = INT64_MIN;  // the fix agrees with the filter: nothing is displaced
     return JumpVerdict::kClean;
   }
   if (held_too_long) return JumpVerdict::kHeldTooLong;
