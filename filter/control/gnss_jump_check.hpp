@@ -13,11 +13,11 @@
 //
 //   d_k = nu_k - rho_{k-1},   S_d = R_k + R_{k-1} + dt^2 P_vv,
 //
-// (with what other updates moved the filter in between taken out) is the difference of two fixes' noise (plus the velocity error over dt) on a healthy stream,
-// and the step on a displaced one. A filter that is merely overconfident drifts: its innovations
-// grow over many epochs, each d_k small. The time-differenced position test is RAIM-like change
-// detection on the position domain (the jump test of carrier-phase cycle-slip detection with the
-// INS as predictor; Groves §17.4.2 on using the INS to check GNSS).
+// with what other updates moved the filter in between taken out, is the difference of two fixes'
+// noise (plus the velocity error over dt) on a healthy stream, and the step on a displaced one. A
+// filter that is merely overconfident drifts: its innovations grow over many epochs, each d_k
+// small. It is change detection on time-differenced positions with the INS as the predictor, as
+// cycle slips are found in carrier phase (Groves 2nd ed. ch. 17 on fault detection).
 //
 // A step (d^T S_d^-1 d above gates.gnss_jump, after the stream's own scale below) to a fix that
 // fails the filter's own gate starts a displacement: from then on the fixes are rejected as
