@@ -44,6 +44,9 @@ struct CalibrationSetup {
   bool imu_in_vehicle_frame = false;  // the device applied its own mounting (SensorFrame::kVehicle)
   double imu_time_offset_s = 0.0;     // configured
   Eigen::Vector3d wheel_lever_arm_m = Eigen::Vector3d::Zero();
+  // Primary -> secondary antenna, vehicle frame (filter/measurements/gnss_heading.hpp
+  // heading_baseline_b): the vehicle's x axis for a device that reports its heading.
+  Eigen::Vector3d heading_baseline_v_m = Eigen::Vector3d::UnitX();
   Eigen::Vector3d nhc_lever_arm_m = Eigen::Vector3d::Zero();
   bool land_vehicle = false;  // NHC applies
   double nhc_lateral_std_mps = 0.1;
@@ -66,6 +69,7 @@ struct CalibrationLog {
   std::vector<ImuSample> imu;           // time order, IMU clock
   std::vector<GnssPosition> positions;  // primary antenna, GNSS time base, covariance scaled as the filter does
   std::vector<GnssVelocity> velocities;
+  std::vector<GnssHeading> headings;    // dual-antenna, GNSS time base
   std::vector<SpeedSample> speeds;
   std::vector<TrajectoryPoint> trajectory;  // smoothed, time order, IMU clock
 };

@@ -219,6 +219,21 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
     ++result.gnss_velocity_residuals;
   }
 
+  for (const GnssHeading& h : log.headings) {
+    if ((h.header.valid & GnssHeading::kValidHeading) == 0 || !(h.heading_std_rad > 0.0) ||
+        !std::isfinite(h.heading_rad)) {
+      continue;
+    }
+    Epoch* e = epoch_near(h.header.time_ns);
+    if (e == nullptr) continue;
+    const Eigen::Matrix3d c_nt = frame.rot_from_ned({e->llh}).transpose();
+    const double tau = static_cast<double>(h.header.time_ns - e->time_ns) / kNsPerS;
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<GnssHeadingFactor, 1, 4, 2, 1>(new GnssHeadingFactor(
+                                 h.heading_rad, h.heading_std_rad, setup.heading_baseline_v_m, c_nt, tau, e->knowns)),
+                             new ceres::HuberLoss(options.huber_sigmas), e->q.data(), g.mount, g.dt);
+    ++result.gnss_heading_residuals;
+  }
+
   // Odometry and NHC at every epoch.
   const Eigen::Matrix3d c_vs0 = rot::dcm_from_rpy(setup.mounting_rpy_rad);
   const Eigen::Matrix3d c_vs_start = mounting_dcm(mount_residual_rad.data(), c_vs0);
@@ -247,7 +262,7 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
       ++result.nhc_residuals;
     }
   }
-  result.mounting_estimated = result.speed_residuals + result.nhc_residuals > 0;
+  result.mounting_estimated = result.speed_residuals + result.nhc_residuals + result.gnss_heading_residuals > 0;
   result.mounting_is_residual = setup.imu_in_vehicle_frame;
   if (!result.mounting_estimated) {
     problem.SetParameterBlockConstant(g.mount);

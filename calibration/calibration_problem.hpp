@@ -1,6 +1,6 @@
 // The batch calibration over a whole log (Ceres): states at the GNSS epochs tied by IMU
 // preintegration (preintegration_factor.hpp), GNSS position and velocity through the lever arm and
-// the IMU clock offset (gnss_factors.hpp), wheel speed with an odometer scale and the
+// the IMU clock offset, dual-antenna heading through the mounting (gnss_factors.hpp), wheel speed with an odometer scale and the
 // non-holonomic constraint through the mounting (odometry_factors.hpp), robust (Huber) losses on
 // every aiding residual so outliers do not drag the fit. The states start from the smoothed
 // solution (filter/smoother); the installation from the configuration.
@@ -10,8 +10,8 @@
 // added so odometry and NHC are seen throughout. An IMU gap longer than max_imu_gap_s breaks the
 // chain: the pieces share only the calibration parameters.
 //
-// Estimated: lever arm, mounting pitch and yaw about the vehicle axes (when odometry or NHC sees
-// them; the vehicle roll is held; mounting_rotation.hpp),
+// Estimated: lever arm, mounting pitch and yaw about the vehicle axes (when odometry, NHC or a
+// dual-antenna heading sees them; the vehicle roll is held; mounting_rotation.hpp),
 // the IMU time offset, the odometer scale (with wheel speeds), gyro and accelerometer biases
 // (constant over the log; their drift is allowed for in the preintegration covariance). Their std
 // devs come from ceres::Covariance, scaled up by the fit's variance factor when residuals are

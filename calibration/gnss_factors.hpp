@@ -14,6 +14,8 @@
 // Blocks: p, v, q, lever arm (vehicle frame), mounting residual [pitch, yaw], dt_imu.
 #pragma once
 
+#include <cmath>
+
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -85,6 +87,43 @@ class GnssVelocityFactor {
  private:
   Eigen::Vector3d vel_;
   Eigen::Matrix3d sqrt_info_;
+  double tau_;
+  EpochKnowns k_;
+};
+
+// Dual-antenna heading (GnssHeading): the azimuth of the baseline from the primary to the
+// secondary antenna, fixed in the vehicle frame (b_v, from the two configured lever arms, as the
+// filter's gnss_heading.hpp takes it; the estimated primary lever arm does not move it). Through
+// the mounting, b_s = C_vs^T b_v is what the IMU's attitude turns: the heading sees the mounting's
+// yaw directly, with or without odometry. Moved over tau - dt_imu by the rate as the position is:
+//   b_n = C_nt R (b_s + (omega_s x b_s)(tau - dt_imu))
+// The residual is the signed angle from the measured azimuth to b_n's, atan2 of the horizontal
+// cross and dot products (no wrap at +-pi), over the reported std. The baseline's elevation is
+// not used (it sees the mounting's pitch only across a long baseline's few-degree tilt).
+// Blocks: q, mounting residual [pitch, yaw], dt_imu.
+class GnssHeadingFactor {
+ public:
+  GnssHeadingFactor(double heading_rad, double std_rad, const Eigen::Vector3d& baseline_v,
+                    const Eigen::Matrix3d& c_nt, double tau_s, const EpochKnowns& k)
+      : cos_(std::cos(heading_rad)), sin_(std::sin(heading_rad)), inv_std_(1.0 / std_rad), baseline_v_(baseline_v),
+        c_nt_(c_nt), tau_(tau_s), k_(k) {}
+
+  template <typename T>
+  bool operator()(const T* q, const T* mount, const T* dt, T* out) const {
+    using V3 = Eigen::Matrix<T, 3, 1>;
+    using std::atan2;
+    const Eigen::Matrix<T, 3, 3> r = Eigen::Map<const Eigen::Quaternion<T>>(q).toRotationMatrix();
+    const V3 b_s = mounting_dcm(mount, k_.c_vs0).transpose() * baseline_v_.cast<T>();
+    const V3 moved_s = b_s + cross(V3(k_.rate_s_rps.cast<T>()), b_s) * (T(tau_) - dt[0]);
+    const V3 b_n = c_nt_.cast<T>() * (r * moved_s);
+    out[0] = atan2(T(cos_) * b_n.y() - T(sin_) * b_n.x(), T(cos_) * b_n.x() + T(sin_) * b_n.y()) * T(inv_std_);
+    return true;
+  }
+
+ private:
+  double cos_, sin_, inv_std_;
+  Eigen::Vector3d baseline_v_;
+  Eigen::Matrix3d c_nt_;
   double tau_;
   EpochKnowns k_;
 };

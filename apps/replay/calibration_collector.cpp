@@ -4,6 +4,7 @@
 #include <type_traits>
 
 #include "core/time/gps_time.hpp"
+#include "filter/measurements/gnss_heading.hpp"
 #include "filter/measurements/wheel_speed.hpp"
 
 namespace navfuse::apps {
@@ -23,6 +24,7 @@ CalibrationCollector::CalibrationCollector(const filter::FilterOptions& o) : opt
   s.mounting_rpy_rad = o.mounting_rpy_rad;
   s.imu_time_offset_s = o.imu_time_offset_s;
   s.wheel_lever_arm_m = o.wheel_lever_arm_m;
+  s.heading_baseline_v_m = filter::heading_baseline_b(o.gnss_lever_arm_m, o.gnss_secondary_lever_arm_m);
   s.nhc_lever_arm_m = o.nhc_lever_arm_m.value_or(o.wheel_lever_arm_m);
   s.land_vehicle = o.land_vehicle;
   s.nhc_lateral_std_mps = o.nhc_lateral_std_mps;
@@ -60,6 +62,10 @@ void CalibrationCollector::add(const Measurement& m) {
           GnssVelocity v = x;
           v.header.time_ns += shift_ns;
           log_.velocities.push_back(v);
+        } else if constexpr (std::is_same_v<T, GnssHeading>) {
+          GnssHeading h = x;
+          h.header.time_ns += shift_ns;
+          log_.headings.push_back(h);
         } else if constexpr (std::is_same_v<T, VehicleSpeed> || std::is_same_v<T, WheelSpeeds>) {
           std::optional<filter::SpeedReading> r;
           if constexpr (std::is_same_v<T, VehicleSpeed>) {

@@ -66,6 +66,43 @@ TEST(CalibrationProblem, RecoversSimulatedInstallation) {
   EXPECT_LT(r.position_rms_m, 0.06);  // RTK: 2 cm horizontal, 3 cm vertical per axis
 }
 
+// A dual-antenna receiver and no odometry (not a land vehicle: no NHC either): the heading alone
+// sees the mounting's yaw, the angle between the baseline the receiver measures and the axes the
+// IMU turns. The baseline, 1.5 m at 36.9 deg to the vehicle's x axis, is configured right.
+TEST(CalibrationProblem, ADualAntennaHeadingFindsTheMountingYawWithoutOdometry) {
+  sim::Scenario scenario = sim::make_scenario("calibration_drive");
+  scenario.gnss.heading = true;
+  scenario.gnss.secondary_lever_arm_m = scenario.gnss.lever_arm_m + Eigen::Vector3d(1.2, 0.9, 0.0);
+  const testing::StartingSetup start{.lever_arm_m = scenario.gnss.lever_arm_m + Eigen::Vector3d(0.3, -0.2, 0.4),
+                                     .mounting_rpy_deg = Eigen::Vector3d(scenario.imu.mounting_rpy_deg.x(), 0.0, 0.0),
+                                     .imu_time_offset_s = 0.0};
+  testing::SimLog s = testing::sim_log(scenario, start);
+  s.log.setup.land_vehicle = false;
+  s.log.speeds.clear();
+  ASSERT_FALSE(s.log.headings.empty());
+  const CalibrationResult r = calibrate(s.log);
+  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.covariance_ok) << r.message;
+  ASSERT_TRUE(r.mounting_estimated);
+  EXPECT_GT(r.gnss_heading_residuals, s.log.headings.size() / 2);
+  EXPECT_EQ(r.speed_residuals + r.nhc_residuals, 0u);
+  const double yaw_err_deg = r.mounting_rpy_rad.value.z() * rot::kRadToDeg - scenario.imu.mounting_rpy_deg.z();
+  const double yaw_std_deg = r.mounting_rpy_rad.std.z() * rot::kRadToDeg;
+  const double dt_err_s = r.imu_time_offset_s.value - scenario.imu.time_offset_s;
+  std::printf("%zu headings: mounting yaw error %.4f deg (std %.4f), time offset error %.3f ms (std %.3f); %s\n",
+              s.log.headings.size(), yaw_err_deg, yaw_std_deg, dt_err_s * 1e3, r.imu_time_offset_s.std * 1e3,
+              r.message.c_str());
+  EXPECT_LT(std::abs(yaw_err_deg), 0.1);
+  EXPECT_LT(std::abs(yaw_err_deg), kSigmas * yaw_std_deg);
+  EXPECT_LT(std::abs(dt_err_s), 0.002);
+  EXPECT_LT(std::abs(dt_err_s), kSigmas * r.imu_time_offset_s.std);
+  // The same log without the headings: nothing sees the mounting, which stays as configured.
+  s.log.headings.clear();
+  const CalibrationResult without = calibrate(s.log);
+  EXPECT_FALSE(without.mounting_estimated);
+  EXPECT_NEAR(without.mounting_rpy_rad.value.z(), 0.0, 1e-12);
+}
+
 TEST(CalibrationProblem, NothingToCalibrateSaysWhy) {
   CalibrationLog empty;
   const CalibrationResult r = calibrate(empty);

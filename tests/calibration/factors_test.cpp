@@ -59,6 +59,38 @@ TEST(CalibrationFactors, GnssVelocityMovesWithAcceleration) {
   EXPECT_NEAR(r[1], 0.0, 1e-12);
 }
 
+TEST(CalibrationFactors, GnssHeadingSeesTheMountingYawAndTheBaselinesTurn) {
+  // Sensor x pointing east (yaw 90 deg), baseline along the vehicle's x, the tangent frame's
+  // north the local one. Mounting yaw residual 1 deg: C_nv = C_ns C_vs^T = R_z(90 - 1), so the
+  // baseline points at 89 deg. A receiver saying 89.5 deg with a 0.25 deg std: residual -2.
+  EpochKnowns k;
+  const Eigen::Vector3d baseline_v = Eigen::Vector3d::UnitX();
+  const auto q = yaw_quat(90.0 * kDeg);
+  const double mount[2] = {0.0, 1.0 * kDeg}, dt[1] = {0.0};
+  double r[1];
+  const GnssHeadingFactor f(89.5 * kDeg, 0.25 * kDeg, baseline_v, Eigen::Matrix3d::Identity(), 0.0, k);
+  ASSERT_TRUE(f(q.data(), mount, dt, r));
+  EXPECT_NEAR(r[0], -2.0, 1e-9);
+  // Across +-180 deg: a baseline at 179.5 deg against a measured -179.5 deg is 1 deg short.
+  const auto q_south = yaw_quat(179.5 * kDeg);
+  const double level[2] = {0.0, 0.0};
+  const GnssHeadingFactor wrap(-179.5 * kDeg, 1.0 * kDeg, baseline_v, Eigen::Matrix3d::Identity(), 0.0, k);
+  ASSERT_TRUE(wrap(q_south.data(), level, dt, r));
+  EXPECT_NEAR(r[0], -1.0, 1e-9);
+  // Turning at 0.5 rad/s about down, the fix 0.05 s after the state less a 0.03 s clock offset:
+  // the baseline (1, 0, 0) in the sensor moves to (1, 0.01, 0), azimuth 90 + atan(0.01).
+  k.rate_s_rps = Eigen::Vector3d(0.0, 0.0, 0.5);
+  const double offset[1] = {0.03};
+  const GnssHeadingFactor turning(90.0 * kDeg, 1.0 * kDeg, baseline_v, Eigen::Matrix3d::Identity(), 0.05, k);
+  ASSERT_TRUE(turning(q.data(), level, offset, r));
+  EXPECT_NEAR(r[0], std::atan(0.01) / kDeg, 1e-9);
+  // The tangent frame turned from the local NED (meridian convergence): C_nt adds its angle.
+  const Eigen::Matrix3d c_nt = Eigen::AngleAxisd(0.2 * kDeg, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const GnssHeadingFactor converged(90.0 * kDeg, 1.0 * kDeg, baseline_v, c_nt, 0.0, EpochKnowns{});
+  ASSERT_TRUE(converged(q.data(), level, dt, r));
+  EXPECT_NEAR(r[0], 0.2, 1e-9);
+}
+
 TEST(CalibrationFactors, WheelSpeedAndNhcSeeTheMounting) {
   // Driving east at 10 m/s, sensor x along the motion (yaw 90 deg); the IMU turned 1 deg in yaw
   // from the vehicle: the vehicle sees (10 cos 1, 10 sin 1, 0) m/s.

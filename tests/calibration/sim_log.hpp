@@ -38,6 +38,7 @@ inline SimLog sim_log(const sim::Scenario& scenario, const StartingSetup& start)
   s.mounting_rpy_rad = start.mounting_rpy_deg * rot::kDegToRad;
   s.imu_time_offset_s = start.imu_time_offset_s;
   s.wheel_lever_arm_m = scenario.wheel.lever_arm_m;
+  if (scenario.gnss.heading) s.heading_baseline_v_m = scenario.gnss.secondary_lever_arm_m - scenario.gnss.lever_arm_m;
   s.nhc_lever_arm_m = Eigen::Vector3d::Zero();  // the simulated vehicle does not slip at its reference point
   s.land_vehicle = true;
   s.gyro_arw_rad_rts = 0.1 * rot::kDegToRad / 60.0;
@@ -50,6 +51,7 @@ inline SimLog sim_log(const sim::Scenario& scenario, const StartingSetup& start)
     if (const auto* imu = std::get_if<ImuSample>(&m)) log.imu.push_back(*imu);
     if (const auto* p = std::get_if<GnssPosition>(&m)) log.positions.push_back(*p);
     if (const auto* v = std::get_if<GnssVelocity>(&m)) log.velocities.push_back(*v);
+    if (const auto* h = std::get_if<GnssHeading>(&m)) log.headings.push_back(*h);
     if (const auto* w = std::get_if<VehicleSpeed>(&m)) {
       log.speeds.push_back({.time_ns = w->header.time_ns, .speed_mps = w->speed_mps, .std_mps = w->speed_std_mps});
     }
