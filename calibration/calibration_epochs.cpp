@@ -59,12 +59,15 @@ EpochPlan plan_epochs(const CalibrationLog& log, const CalibrationSetup& setup, 
   };
   const auto tolerance_ns = static_cast<std::int64_t>(0.02 * kNsPerS);
 
-  // The samples at the fixes, then fill-ins between fixes further apart than the spacing.
+  // The samples at the fixes (the receiver's and external aiding's positions), then fill-ins
+  // between fixes further apart than the spacing.
   std::set<std::size_t> chosen;
-  for (const GnssPosition& fix : log.positions) {
-    const std::size_t i = nearest_imu(log.imu, fix.header.time_ns - offset_ns);
+  const auto anchor_at = [&](std::int64_t fix_time_ns) {
+    const std::size_t i = nearest_imu(log.imu, fix_time_ns - offset_ns);
     if (traj_at(log.imu[i].header.time_ns, tolerance_ns) != nullptr) chosen.insert(i);
-  }
+  };
+  for (const GnssPosition& fix : log.positions) anchor_at(fix.header.time_ns);
+  for (const ExternalPosition& fix : log.external_positions) anchor_at(fix.header.time_ns);
   const auto spacing_ns = static_cast<std::int64_t>(max_spacing_s * kNsPerS);
   const auto gap_ns = static_cast<std::int64_t>(max_imu_gap_s * kNsPerS);
   std::vector<std::size_t> base(chosen.begin(), chosen.end());

@@ -70,6 +70,12 @@ struct CalibrationLog {
   std::vector<GnssPosition> positions;  // primary antenna, GNSS time base, covariance scaled as the filter does
   std::vector<GnssVelocity> velocities;
   std::vector<GnssHeading> headings;    // dual-antenna, GNSS time base
+  // External aiding (MIP 0x13 semantics), GNSS time base (their configured offset added). A
+  // velocity in the vehicle frame is not used (a body-frame velocity, as odometry's, would need
+  // its own factor).
+  std::vector<ExternalPosition> external_positions;
+  std::vector<ExternalVelocity> external_velocities;
+  std::vector<ExternalHeading> external_headings;
   std::vector<SpeedSample> speeds;
   std::vector<TrajectoryPoint> trajectory;  // smoothed, time order, IMU clock
 };

@@ -1,7 +1,9 @@
 #include "calibration/calibration_problem.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <deque>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -111,7 +113,7 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
   EpochPlan plan = plan_epochs(log, setup, frame, options.max_epoch_spacing_s, options.max_imu_gap_s);
   std::vector<Epoch>& epochs = plan.epochs;
   if (epochs.size() < 3) {
-    result.message = "fewer than 3 epochs where GNSS fixes meet the smoothed trajectory";
+    result.message = "fewer than 3 epochs where GNSS or external position fixes meet the smoothed trajectory";
     return result;
   }
   result.epochs = epochs.size();
@@ -219,19 +221,87 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
     ++result.gnss_velocity_residuals;
   }
 
-  for (const GnssHeading& h : log.headings) {
-    if ((h.header.valid & GnssHeading::kValidHeading) == 0 || !(h.heading_std_rad > 0.0) ||
-        !std::isfinite(h.heading_rad)) {
-      continue;
-    }
-    Epoch* e = epoch_near(h.header.time_ns);
-    if (e == nullptr) continue;
+  // Headings: the dual-antenna baseline's, and external aiding's of the vehicle's x axis.
+  std::uint64_t heading_residuals = 0;
+  auto add_heading = [&](std::int64_t time_ns, double heading_rad, double std_rad, const Eigen::Vector3d& baseline_v) {
+    if (!(std_rad > 0.0) || !std::isfinite(std_rad) || !std::isfinite(heading_rad)) return false;
+    Epoch* e = epoch_near(time_ns);
+    if (e == nullptr) return false;
     const Eigen::Matrix3d c_nt = frame.rot_from_ned({e->llh}).transpose();
-    const double tau = static_cast<double>(h.header.time_ns - e->time_ns) / kNsPerS;
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<GnssHeadingFactor, 1, 4, 2, 1>(new GnssHeadingFactor(
-                                 h.heading_rad, h.heading_std_rad, setup.heading_baseline_v_m, c_nt, tau, e->knowns)),
+    const double tau = static_cast<double>(time_ns - e->time_ns) / kNsPerS;
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<GnssHeadingFactor, 1, 4, 2, 1>(
+                                 new GnssHeadingFactor(heading_rad, std_rad, baseline_v, c_nt, tau, e->knowns)),
                              new ceres::HuberLoss(options.huber_sigmas), e->q.data(), g.mount, g.dt);
-    ++result.gnss_heading_residuals;
+    ++heading_residuals;
+    return true;
+  };
+  for (const GnssHeading& h : log.headings) {
+    if ((h.header.valid & GnssHeading::kValidHeading) == 0) continue;
+    if (add_heading(h.header.time_ns, h.heading_rad, h.heading_std_rad, setup.heading_baseline_v_m)) {
+      ++result.gnss_heading_residuals;
+    }
+  }
+  for (const ExternalHeading& h : log.external_headings) {
+    if ((h.header.valid & ExternalHeading::kValidHeading) == 0) continue;
+    if (add_heading(h.header.time_ns, h.heading_rad, h.std_rad, Eigen::Vector3d::UnitX())) ++result.external_residuals;
+  }
+
+  // External positions and velocities: at their own lever arms, held (constant blocks, one per
+  // distinct arm), weighted per axis in the frame they come in.
+  std::deque<std::array<double, 3>> fixed_levers;
+  auto fixed_lever = [&](const Eigen::Vector3d& l) {
+    for (std::array<double, 3>& a : fixed_levers) {
+      if (a[0] == l.x() && a[1] == l.y() && a[2] == l.z()) return a.data();
+    }
+    fixed_levers.push_back({l.x(), l.y(), l.z()});
+    return fixed_levers.back().data();
+  };
+  constexpr std::uint32_t kAxes = 0b111u;
+  auto usable_axes = [](const Eigen::Vector3d& value, const Eigen::Vector3d& std, std::uint32_t valid) {
+    if ((valid & kAxes) == 0) return false;
+    for (int i = 0; i < 3; ++i) {
+      if ((valid >> i & 1u) != 0 && (!std::isfinite(value[i]) || !(std[i] > 0.0) || !std::isfinite(std[i]))) return false;
+    }
+    return true;
+  };
+  for (const ExternalPosition& m : log.external_positions) {
+    if (!usable_axes(m.value, m.std_m, m.header.valid)) continue;
+    Epoch* e = epoch_near(m.header.time_ns);
+    if (e == nullptr) continue;
+    Eigen::Vector3d pos_t;
+    Eigen::Matrix3d axes_from_t;
+    if (m.frame == PositionFrame::kLlh) {
+      const geo::Llh llh{m.value.x(), m.value.y(), m.value.z()};
+      pos_t = frame.position(llh);
+      axes_from_t = frame.rot_from_ned(llh).transpose();
+    } else {
+      pos_t = frame.position_from_ecef(m.value);
+      axes_from_t = frame.rot_from_ecef().transpose();
+    }
+    double* lever = fixed_lever(m.lever_arm_m);
+    const double tau = static_cast<double>(m.header.time_ns - e->time_ns) / kNsPerS;
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<GnssPositionFactor, 3, 3, 3, 4, 3, 2, 1>(new GnssPositionFactor(
+            pos_t, axis_sqrt_information(m.std_m, m.header.valid, axes_from_t), tau, e->knowns)),
+        new ceres::HuberLoss(options.huber_sigmas), e->p.data(), e->v.data(), e->q.data(), lever, g.mount, g.dt);
+    problem.SetParameterBlockConstant(lever);
+    ++result.external_residuals;
+  }
+  for (const ExternalVelocity& m : log.external_velocities) {
+    if (m.frame == VelocityFrame::kVehicle || !usable_axes(m.value_mps, m.std_mps, m.header.valid)) continue;
+    Epoch* e = epoch_near(m.header.time_ns);
+    if (e == nullptr) continue;
+    const Eigen::Matrix3d t_from_axes = m.frame == VelocityFrame::kNed ? frame.rot_from_ned({e->llh}) : frame.rot_from_ecef();
+    const Eigen::Matrix3d axes_from_t = t_from_axes.transpose();
+    double* lever = fixed_lever(m.lever_arm_m);
+    const double tau = static_cast<double>(m.header.time_ns - e->time_ns) / kNsPerS;
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<GnssVelocityFactor, 3, 3, 4, 3, 2, 1>(new GnssVelocityFactor(
+            axes_from_t.transpose() * m.value_mps, axis_sqrt_information(m.std_mps, m.header.valid, axes_from_t), tau,
+            e->knowns)),
+        new ceres::HuberLoss(options.huber_sigmas), e->v.data(), e->q.data(), lever, g.mount, g.dt);
+    problem.SetParameterBlockConstant(lever);
+    ++result.external_residuals;
   }
 
   // Odometry and NHC at every epoch.
@@ -262,7 +332,7 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
       ++result.nhc_residuals;
     }
   }
-  result.mounting_estimated = result.speed_residuals + result.nhc_residuals + result.gnss_heading_residuals > 0;
+  result.mounting_estimated = result.speed_residuals + result.nhc_residuals + heading_residuals > 0;
   result.mounting_is_residual = setup.imu_in_vehicle_frame;
   if (!result.mounting_estimated) {
     problem.SetParameterBlockConstant(g.mount);

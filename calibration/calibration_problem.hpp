@@ -1,6 +1,7 @@
 // The batch calibration over a whole log (Ceres): states at the GNSS epochs tied by IMU
 // preintegration (preintegration_factor.hpp), GNSS position and velocity through the lever arm and
-// the IMU clock offset, dual-antenna heading through the mounting (gnss_factors.hpp), wheel speed with an odometer scale and the
+// the IMU clock offset, dual-antenna heading through the mounting (gnss_factors.hpp; external
+// aiding's positions, velocities and headings through the same factors at their own lever arms), wheel speed with an odometer scale and the
 // non-holonomic constraint through the mounting (odometry_factors.hpp), robust (Huber) losses on
 // every aiding residual so outliers do not drag the fit. The states start from the smoothed
 // solution (filter/smoother); the installation from the configuration.

@@ -30,7 +30,7 @@ struct CalibrationResult {
   // roll is held. The Euler angles' stds follow from the residual's covariance.
   Estimate3 mounting_rpy_rad;
   Estimate2 mounting_residual_rad;  // vehicle pitch, yaw about the configured mounting
-  bool mounting_estimated = false;  // false: no odometry, NHC or GNSS heading saw it
+  bool mounting_estimated = false;  // false: no odometry, NHC or heading saw it
   // The IMU reported in the vehicle frame (the device's own mounting): the mounting is then a
   // residual about the vehicle axes, not the config key's sensor -> vehicle rotation.
   bool mounting_is_residual = false;
@@ -47,6 +47,7 @@ struct CalibrationResult {
   std::uint64_t gnss_position_residuals = 0;
   std::uint64_t gnss_velocity_residuals = 0;
   std::uint64_t gnss_heading_residuals = 0;
+  std::uint64_t external_residuals = 0;  // external aiding: positions, velocities, headings
   std::uint64_t speed_residuals = 0;
   std::uint64_t nhc_residuals = 0;
   int iterations = 0;

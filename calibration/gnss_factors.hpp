@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -43,10 +44,30 @@ Eigen::Matrix<T, 3, 1> antenna_velocity(const Eigen::Matrix<T, 3, 1>& v, const E
   return v + r * cross(Eigen::Matrix<T, 3, 1>(k.rate_s_rps.cast<T>()), lever_s);
 }
 
+// A square-root information matrix given as such: rows may be zero (an axis the measurement does
+// not have, as external aiding's per-axis validity says), which no covariance can express.
+struct SqrtInformation {
+  Eigen::Matrix3d u;
+};
+
+// Per-axis std devs along the rows of `axes_from_t` (tangent -> the measurement's axes), an axis
+// whose bit is clear in `valid_axes` weighted zero: U = diag(1/std) A.
+inline SqrtInformation axis_sqrt_information(const Eigen::Vector3d& std, std::uint32_t valid_axes,
+                                             const Eigen::Matrix3d& axes_from_t) {
+  Eigen::Vector3d w = Eigen::Vector3d::Zero();
+  for (int i = 0; i < 3; ++i) {
+    if ((valid_axes >> i & 1u) != 0) w[i] = 1.0 / std[i];
+  }
+  return {w.asDiagonal() * axes_from_t};
+}
+
+// Also used for external aiding's positions at their own (fixed) lever arms.
 class GnssPositionFactor {
  public:
   GnssPositionFactor(const Eigen::Vector3d& pos_t, const Eigen::Matrix3d& cov_t, double tau_s, const EpochKnowns& k)
       : pos_(pos_t), sqrt_info_(sqrt_information(cov_t)), tau_(tau_s), k_(k) {}
+  GnssPositionFactor(const Eigen::Vector3d& pos_t, const SqrtInformation& w, double tau_s, const EpochKnowns& k)
+      : pos_(pos_t), sqrt_info_(w.u), tau_(tau_s), k_(k) {}
 
   template <typename T>
   bool operator()(const T* p, const T* v, const T* q, const T* lever, const T* mount, const T* dt, T* out) const {
@@ -71,6 +92,8 @@ class GnssVelocityFactor {
  public:
   GnssVelocityFactor(const Eigen::Vector3d& vel_t, const Eigen::Matrix3d& cov_t, double tau_s, const EpochKnowns& k)
       : vel_(vel_t), sqrt_info_(sqrt_information(cov_t)), tau_(tau_s), k_(k) {}
+  GnssVelocityFactor(const Eigen::Vector3d& vel_t, const SqrtInformation& w, double tau_s, const EpochKnowns& k)
+      : vel_(vel_t), sqrt_info_(w.u), tau_(tau_s), k_(k) {}
 
   template <typename T>
   bool operator()(const T* v, const T* q, const T* lever, const T* mount, const T* dt, T* out) const {
@@ -100,6 +123,7 @@ class GnssVelocityFactor {
 // The residual is the signed angle from the measured azimuth to b_n's, atan2 of the horizontal
 // cross and dot products (no wrap at +-pi), over the reported std. The baseline's elevation is
 // not used (it sees the mounting's pitch only across a long baseline's few-degree tilt).
+// External aiding's heading (ExternalHeading) is the same with the vehicle's x axis as baseline.
 // Blocks: q, mounting residual [pitch, yaw], dt_imu.
 class GnssHeadingFactor {
  public:

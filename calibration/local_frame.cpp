@@ -11,7 +11,11 @@ LocalFrame::LocalFrame(const geo::Llh& origin)
       earth_rate_(c_te_ * Eigen::Vector3d(0.0, 0.0, geo::wgs84::kEarthRate_radps)) {}
 
 Eigen::Vector3d LocalFrame::position(const geo::Llh& llh) const {
-  return c_te_ * (geo::ecef_from_llh(llh) - origin_ecef_);
+  return position_from_ecef(geo::ecef_from_llh(llh));
+}
+
+Eigen::Vector3d LocalFrame::position_from_ecef(const Eigen::Vector3d& ecef_m) const {
+  return c_te_ * (ecef_m - origin_ecef_);
 }
 
 Eigen::Matrix3d LocalFrame::rot_from_ned(const geo::Llh& llh) const {

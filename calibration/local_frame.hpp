@@ -16,6 +16,9 @@ class LocalFrame {
   explicit LocalFrame(const geo::Llh& origin);
 
   Eigen::Vector3d position(const geo::Llh& llh) const;  // tangent-frame metres
+  Eigen::Vector3d position_from_ecef(const Eigen::Vector3d& ecef_m) const;
+  // Rotation taking ECEF vectors into the tangent frame.
+  const Eigen::Matrix3d& rot_from_ecef() const { return c_te_; }
   // Rotation taking NED vectors at `llh` into the tangent frame.
   Eigen::Matrix3d rot_from_ned(const geo::Llh& llh) const;
   // Normal gravity (gravitation plus centrifugal) at `llh`, tangent frame.

@@ -66,6 +66,15 @@ void CalibrationCollector::add(const Measurement& m) {
           GnssHeading h = x;
           h.header.time_ns += shift_ns;
           log_.headings.push_back(h);
+        } else if constexpr (std::is_same_v<T, ExternalPosition>) {
+          log_.external_positions.push_back(x);
+          log_.external_positions.back().header.time_ns += shift_ns;
+        } else if constexpr (std::is_same_v<T, ExternalVelocity>) {
+          log_.external_velocities.push_back(x);
+          log_.external_velocities.back().header.time_ns += shift_ns;
+        } else if constexpr (std::is_same_v<T, ExternalHeading>) {
+          log_.external_headings.push_back(x);
+          log_.external_headings.back().header.time_ns += shift_ns;
         } else if constexpr (std::is_same_v<T, VehicleSpeed> || std::is_same_v<T, WheelSpeeds>) {
           std::optional<filter::SpeedReading> r;
           if constexpr (std::is_same_v<T, VehicleSpeed>) {

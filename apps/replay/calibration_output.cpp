@@ -100,8 +100,8 @@ std::string number(double v, int decimals) {
 std::string solve_line(const calib::CalibrationResult& r) {
   std::ostringstream s;
   s << r.epochs << " epochs, " << r.imu_factors << " IMU factors, " << r.gnss_position_residuals << " GNSS positions, "
-    << r.gnss_velocity_residuals << " velocities, " << r.gnss_heading_residuals << " headings, " << r.speed_residuals << " wheel speeds, " << r.nhc_residuals
-    << " NHC; " << r.iterations << " iterations, " << (r.converged ? "converged" : "NOT converged")
+    << r.gnss_velocity_residuals << " velocities, " << r.gnss_heading_residuals << " headings, " << r.external_residuals
+    << " external aiding, " << r.speed_residuals << " wheel speeds, " << r.nhc_residuals << " NHC; " << r.iterations << " iterations, " << (r.converged ? "converged" : "NOT converged")
     << ", GNSS position residual RMS " << number(r.position_rms_m, 3) << " m, IMU noise variances x"
     << number(r.imu_noise_scale, 2) << " (IMU residuals " << number(r.imu_variance_factor, 2) << " per dimension), "
     << number(r.wall_s, 1) << " s";
@@ -190,6 +190,7 @@ nlohmann::ordered_json calibration_json(const calib::CalibrationResult& r) {
   j["gnss_position_residuals"] = r.gnss_position_residuals;
   j["gnss_velocity_residuals"] = r.gnss_velocity_residuals;
   j["gnss_heading_residuals"] = r.gnss_heading_residuals;
+  j["external_residuals"] = r.external_residuals;
   j["speed_residuals"] = r.speed_residuals;
   j["nhc_residuals"] = r.nhc_residuals;
   j["iterations"] = r.iterations;

@@ -4,12 +4,15 @@
 // (0.8, -0.4, -1.3) m), starting from a configuration that is wrong in all of them but roll.
 // The starting trajectory is the truth on the configured clock (what the smoother gives is
 // tested end to end in tests/apps/calibration_scenario_test.cpp).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include <gtest/gtest.h>
 
 #include "calibration/calibration_problem.hpp"
+#include "core/geodesy/geodesy.hpp"
 #include "sim_log.hpp"
 
 namespace navfuse::calib {
@@ -101,6 +104,87 @@ TEST(CalibrationProblem, ADualAntennaHeadingFindsTheMountingYawWithoutOdometry) 
   const CalibrationResult without = calibrate(s.log);
   EXPECT_FALSE(without.mounting_estimated);
   EXPECT_NEAR(without.mounting_rpy_rad.value.z(), 0.0, 1e-12);
+}
+
+// The same installation seen through external aiding only (MIP 0x13 semantics, as `navfuse aid`
+// feeds it): the receiver's fixes as LLH positions at the antenna's lever arm, its velocities in
+// ECEF axes, its heading turned into the vehicle's. No GNSS measurement, no odometry: the
+// external heading sees the mounting's yaw, positions and velocities the clock offset.
+TEST(CalibrationProblem, ExternalAidingAloneFindsTheMountingYawAndTheOffset) {
+  sim::Scenario scenario = sim::make_scenario("calibration_drive");
+  scenario.gnss.heading = true;
+  // Along the vehicle's x axis: the baseline's azimuth is then the vehicle's heading (the ZYX yaw)
+  // at any roll and pitch, so the receiver's headings are external headings as they are.
+  const Eigen::Vector3d baseline_v(1.5, 0.0, 0.0);
+  scenario.gnss.secondary_lever_arm_m = scenario.gnss.lever_arm_m + baseline_v;
+  const testing::StartingSetup start{.lever_arm_m = scenario.gnss.lever_arm_m,
+                                     .mounting_rpy_deg = Eigen::Vector3d(scenario.imu.mounting_rpy_deg.x(), 0.0, 0.0),
+                                     .imu_time_offset_s = 0.0};
+  testing::SimLog s = testing::sim_log(scenario, start);
+  CalibrationLog& log = s.log;
+  log.setup.land_vehicle = false;
+  log.speeds.clear();
+  for (const GnssPosition& p : log.positions) {
+    if ((p.header.valid & GnssPosition::kValidPosition) == 0 || p.fix == GnssFixType::kNone) continue;
+    ExternalPosition e;
+    e.header = p.header;
+    e.header.valid = ExternalPosition::kValidX | ExternalPosition::kValidY | ExternalPosition::kValidZ;
+    e.value = Eigen::Vector3d(p.lat_rad, p.lon_rad, p.height_m);
+    e.std_m = p.cov_ned_m2.diagonal().cwiseSqrt();
+    e.lever_arm_m = scenario.gnss.lever_arm_m;
+    log.external_positions.push_back(e);
+  }
+  for (const GnssVelocity& v : log.velocities) {
+    if ((v.header.valid & GnssVelocity::kValidVelocity) == 0) continue;
+    // Isotropic in ECEF: the receiver's NED covariance's largest variance on every axis.
+    ExternalVelocity e;
+    e.header = v.header;
+    e.header.valid = ExternalVelocity::kValidX | ExternalVelocity::kValidY | ExternalVelocity::kValidZ;
+    e.frame = VelocityFrame::kEcef;
+    const GnssPosition& near = *std::min_element(log.positions.begin(), log.positions.end(),
+                                                 [&](const GnssPosition& a, const GnssPosition& b) {
+                                                   return std::llabs(a.header.time_ns - v.header.time_ns) <
+                                                          std::llabs(b.header.time_ns - v.header.time_ns);
+                                                 });
+    e.value_mps = geo::rot_ecef_from_ned(near.lat_rad, near.lon_rad) * v.vel_ned_mps;
+    e.std_mps = Eigen::Vector3d::Constant(std::sqrt(v.cov_ned_m2ps2.diagonal().maxCoeff()));
+    e.lever_arm_m = scenario.gnss.lever_arm_m;
+    log.external_velocities.push_back(e);
+  }
+  for (const GnssHeading& h : log.headings) {
+    if ((h.header.valid & GnssHeading::kValidHeading) == 0) continue;
+    log.external_headings.push_back({.header = h.header, .heading_rad = h.heading_rad, .std_rad = h.heading_std_rad});
+    log.external_headings.back().header.valid = ExternalHeading::kValidHeading;
+  }
+  // Every one inside the smoothed trajectory's span is used (sim_log's starts 30 s in).
+  const auto in_span = [&](const auto& m) {
+    return m.header.time_ns >= log.trajectory.front().time_ns && m.header.time_ns <= log.trajectory.back().time_ns;
+  };
+  const auto external = static_cast<std::uint64_t>(
+      std::count_if(log.external_positions.begin(), log.external_positions.end(), in_span) +
+      std::count_if(log.external_velocities.begin(), log.external_velocities.end(), in_span) +
+      std::count_if(log.external_headings.begin(), log.external_headings.end(), in_span));
+  log.positions.clear();
+  log.velocities.clear();
+  log.headings.clear();
+  const CalibrationResult r = calibrate(log);
+  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.covariance_ok) << r.message;
+  ASSERT_TRUE(r.mounting_estimated);
+  EXPECT_EQ(r.gnss_position_residuals + r.gnss_velocity_residuals + r.gnss_heading_residuals, 0u);
+  EXPECT_EQ(r.external_residuals, external);
+  const double yaw_err_deg = r.mounting_rpy_rad.value.z() * rot::kRadToDeg - scenario.imu.mounting_rpy_deg.z();
+  const double yaw_std_deg = r.mounting_rpy_rad.std.z() * rot::kRadToDeg;
+  const double dt_err_s = r.imu_time_offset_s.value - scenario.imu.time_offset_s;
+  std::printf("%llu external residuals: mounting yaw error %.4f deg (std %.4f), time offset error %.3f ms (std %.3f); %s\n",
+              static_cast<unsigned long long>(r.external_residuals), yaw_err_deg, yaw_std_deg, dt_err_s * 1e3,
+              r.imu_time_offset_s.std * 1e3, r.message.c_str());
+  EXPECT_LT(std::abs(yaw_err_deg), 0.1);
+  EXPECT_LT(std::abs(yaw_err_deg), kSigmas * yaw_std_deg);
+  EXPECT_LT(std::abs(dt_err_s), 0.002);
+  EXPECT_LT(std::abs(dt_err_s), kSigmas * r.imu_time_offset_s.std);
+  // The GNSS lever arm has no measurement: it comes back at its prior.
+  EXPECT_NEAR(r.gnss_lever_arm_m.std.x(), CalibrationOptions{}.lever_arm_prior_std_m, 1e-3);
 }
 
 TEST(CalibrationProblem, NothingToCalibrateSaysWhy) {

@@ -45,6 +45,31 @@ TEST(CalibrationFactors, GnssPositionThroughLeverArmAndClockOffset) {
   EXPECT_NEAR(r[0], 0.0375, 1e-12);
 }
 
+TEST(CalibrationFactors, ExternalAxesWeighOnlyWhatIsValid) {
+  // The case above (raw residual 0.075, -0.1, 0) with per-axis std devs (2, 4, 1) and the
+  // second axis invalid: (0.0375, 0, 0). In axes that swap north and east, both valid with std 1:
+  // (-0.1, 0.075, 0), the third axis invalid.
+  EpochKnowns k;
+  k.rate_s_rps = Eigen::Vector3d(0.0, 0.0, 0.5);
+  const double p[3] = {1, 2, 3}, v[3] = {10, 0, 0}, lever[3] = {1, 0, 0}, mount[2] = {0, 0}, dt[1] = {0.05};
+  const auto q = yaw_quat(90.0 * kDeg);
+  double r[3];
+  const GnssPositionFactor f(Eigen::Vector3d(1.4, 3.1, 3.0),
+                             axis_sqrt_information(Eigen::Vector3d(2, 4, 1), 0b101u, Eigen::Matrix3d::Identity()), 0.1, k);
+  ASSERT_TRUE(f(p, v, q.data(), lever, mount, dt, r));
+  EXPECT_NEAR(r[0], 0.0375, 1e-12);
+  EXPECT_EQ(r[1], 0.0);
+  EXPECT_NEAR(r[2], 0.0, 1e-12);
+  Eigen::Matrix3d swap;
+  swap << 0, 1, 0, 1, 0, 0, 0, 0, 1;
+  const GnssPositionFactor g(Eigen::Vector3d(1.4, 3.1, 3.0),
+                             axis_sqrt_information(Eigen::Vector3d::Ones(), 0b011u, swap), 0.1, k);
+  ASSERT_TRUE(g(p, v, q.data(), lever, mount, dt, r));
+  EXPECT_NEAR(r[0], -0.1, 1e-12);
+  EXPECT_NEAR(r[1], 0.075, 1e-12);
+  EXPECT_EQ(r[2], 0.0);
+}
+
 TEST(CalibrationFactors, GnssVelocityMovesWithAcceleration) {
   // Still vehicle accelerating north at 2 m/s^2; the fix is 0.05 s later than the state on the
   // IMU clock (tau 0.1, offset 0.05): predicted (0.1, 0, 0).
