@@ -38,6 +38,23 @@ ImuRates imu_rates(const std::vector<ImuSample>& imu, std::size_t i) {
   return {s.gyro, s.accel, dt};
 }
 
+StartFrameIncrements start_frame_increments(const std::vector<ImuSample>& imu, std::size_t i) {
+  const ImuRates r = imu_rates(imu, i);
+  StartFrameIncrements out{r.gyro_rps * r.dt_s, r.accel_mps2 * r.dt_s, r.dt_s};
+  const ImuSample& s = imu[i];
+  if (s.quantity == ImuQuantity::kIncrements && s.increments == ImuIncrements::kCompensated) return out;
+  Eigen::Vector3d prev_dtheta = out.dtheta_rad, prev_dvel = out.dvel_mps;
+  if (i > 0) {
+    const ImuRates p = imu_rates(imu, i - 1);
+    prev_dtheta = p.gyro_rps * p.dt_s;
+    prev_dvel = p.accel_mps2 * p.dt_s;
+  }
+  const Eigen::Vector3d dth = out.dtheta_rad, dv = out.dvel_mps;
+  out.dvel_mps = dv + 0.5 * dth.cross(dv) + (prev_dtheta.cross(dv) + prev_dvel.cross(dth)) / 12.0;
+  out.dtheta_rad = dth + prev_dtheta.cross(dth) / 12.0;
+  return out;
+}
+
 std::size_t nearest_imu(const std::vector<ImuSample>& imu, std::int64_t time_ns) {
   const auto it = std::lower_bound(imu.begin(), imu.end(), time_ns,
                                    [](const ImuSample& s, std::int64_t t) { return s.header.time_ns < t; });

@@ -33,6 +33,19 @@ struct ImuRates {
 };
 ImuRates imu_rates(const std::vector<ImuSample>& imu, std::size_t i);
 
+// The sample's increments as the preintegration takes them: the attitude change's rotation vector
+// and the velocity change in the body frame at the interval's start. A device's compensated
+// increments are that already (ImuIncrements::kCompensated); raw integrals and rates get the
+// rotation term dtheta x dv / 2 and the two-sample coning and sculling terms with the previous
+// sample (Savage 1998; the filter's strapdown_step adds the same), without which every turn
+// biases the velocity by ~1e-3 m/s^2 (tests/filter/strapdown_sim_test.cpp). Their bias and
+// scale-factor sensitivity is left out of the preintegration's Jacobians (second order).
+struct StartFrameIncrements {
+  Eigen::Vector3d dtheta_rad, dvel_mps;
+  double dt_s;
+};
+StartFrameIncrements start_frame_increments(const std::vector<ImuSample>& imu, std::size_t i);
+
 // Index of the IMU sample nearest `time_ns` (IMU clock); imu must be non-empty and time ordered.
 std::size_t nearest_imu(const std::vector<ImuSample>& imu, std::int64_t time_ns);
 

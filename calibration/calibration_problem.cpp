@@ -148,8 +148,8 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
     const Eigen::Matrix3d c_ts = Eigen::Quaterniond(a.q[3], a.q[0], a.q[1], a.q[2]).toRotationMatrix();
     ImuPreintegration pre(plan.bg0, plan.ba0, c_ts, frame.earth_rate(), noise);
     for (std::size_t i = a.imu_index + 1; i <= b.imu_index; ++i) {
-      const ImuRates r = imu_rates(log.imu, i);
-      pre.add(r.gyro_rps * r.dt_s, r.accel_mps2 * r.dt_s, r.dt_s);
+      const StartFrameIncrements d = start_frame_increments(log.imu, i);
+      pre.add(d.dtheta_rad, d.dvel_mps, d.dt_s);
     }
     pre.add_bias_drift(setup.gyro_bias_std_rps, setup.accel_bias_std_mps2);
     const Eigen::Vector3d gravity = 0.5 * (frame.gravity(a.llh) + frame.gravity(b.llh));

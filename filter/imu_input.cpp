@@ -32,7 +32,7 @@ std::optional<ImuIncrement> ImuInput::convert(const ImuSample& s) {
       scale = since_previous_s / s.dt_s;
       dt = since_previous_s;
     }
-    if (dt > 0.0) out = ImuIncrement{s.header.time_ns, dt, scale * gyro, scale * accel};
+    if (dt > 0.0) out = ImuIncrement{s.header.time_ns, dt, scale * gyro, scale * accel, s.increments};
   } else if (have_previous_ && since_previous_s > 0.0) {
     const double dt = since_previous_s;
     out = ImuIncrement{s.header.time_ns, dt, 0.5 * (previous_rate_ + gyro) * dt,

@@ -40,12 +40,15 @@ void strapdown_step(NavState& x, StrapdownMemory& mem, const ImuIncrement& imu,
   const Eigen::Vector3d& dv = imu.dvel_mps;
   const Eigen::Vector3d prev_dth = mem.has_prev ? mem.prev_dtheta_rad : dth;
   const Eigen::Vector3d prev_dv = mem.has_prev ? mem.prev_dvel_mps : dv;
+  // A device's compensated increments already hold the terms below (ImuIncrements).
+  const bool raw = imu.contents == ImuIncrements::kRawIntegrals;
 
   // Velocity: rotation and sculling compensation of the increment (Savage 1998 part 2; the
   // two-sample form with the previous interval as in Shin 2005 §2.2), then the half-interval
   // rotation of the n frame, (I - [zeta x] / 2).
-  const Eigen::Vector3d dv_rot = 0.5 * dth.cross(dv);
-  const Eigen::Vector3d dv_scul = (prev_dth.cross(dv) + prev_dv.cross(dth)) / 12.0;
+  const Eigen::Vector3d dv_rot = raw ? Eigen::Vector3d(0.5 * dth.cross(dv)) : Eigen::Vector3d::Zero();
+  const Eigen::Vector3d dv_scul =
+      raw ? Eigen::Vector3d((prev_dth.cross(dv) + prev_dv.cross(dth)) / 12.0) : Eigen::Vector3d::Zero();
   const Eigen::Vector3d w_ie = earth.earth_rate_ned_rps;
   const Eigen::Vector3d w_en = earth.transport_rate(x.vel_ned_mps);
   const Eigen::Vector3d zeta = (w_ie + w_en) * dt;
@@ -70,7 +73,7 @@ void strapdown_step(NavState& x, StrapdownMemory& mem, const ImuIncrement& imu,
 
   // Attitude: body rotation vector with the two-sample coning term (Savage 1998 part 1; Shin
   // 2005 §2.2), and the rotation of the n frame over the interval.
-  const Eigen::Vector3d phi_b = dth + prev_dth.cross(dth) / 12.0;
+  const Eigen::Vector3d phi_b = raw ? Eigen::Vector3d(dth + prev_dth.cross(dth) / 12.0) : dth;
   x.q_nb = (rot::quat_from_rotvec(-zeta) * x.q_nb * rot::quat_from_rotvec(phi_b)).normalized();
 
   x.time_ns = imu.time_ns;

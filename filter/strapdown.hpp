@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "core/geodesy/geodesy.hpp"
+#include "core/measurements/measurements.hpp"
 #include "filter/nav_state.hpp"
 
 namespace navfuse::filter {
@@ -18,6 +19,9 @@ struct ImuIncrement {
   double dt_s = 0.0;
   Eigen::Vector3d dtheta_rad = Eigen::Vector3d::Zero();
   Eigen::Vector3d dvel_mps = Eigen::Vector3d::Zero();
+  // kCompensated: the device did the coning, rotation and sculling terms; strapdown_step adds them
+  // only to raw integrals.
+  ImuIncrements contents = ImuIncrements::kRawIntegrals;
 };
 
 // Earth quantities that change only with position: evaluated once per covariance step and reused

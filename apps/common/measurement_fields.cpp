@@ -58,6 +58,7 @@ void measurement_to_record(const Measurement& m, FrameRecord& record) {
           f.vec(inc ? "delta_theta" : "gyro", v.gyro, inc ? "rad" : "radps");
           f.vec(inc ? "delta_v" : "accel", v.accel, inc ? "mps" : "mps2");
           f.add("dt_s", v.dt_s);
+          if (inc) f.add_str("increments", v.increments == ImuIncrements::kCompensated ? "compensated" : "raw_integrals");
           f.add_int("low_rate", v.low_rate);
           f.add_int("saturation", v.saturation);
         } else if constexpr (std::is_same_v<T, GnssPosition>) {

@@ -69,7 +69,7 @@ void ImuModel::make_sample(const TruthSample* nodes, ImuSample& out) {
   } else {
     // Composite Simpson weights 1, 4, 2, 4, ..., 4, 1 times h / 3.
     const double h = dt / n;
-    const bool compensated = spec_.convention == IncrementConvention::kCompensated;
+    const bool compensated = spec_.convention == ImuIncrements::kCompensated;
     const Eigen::Matrix3d c_be0 = c_eb(nodes[0]).transpose();
     gyro_b.setZero();
     accel_b.setZero();
@@ -107,6 +107,7 @@ void ImuModel::make_sample(const TruthSample* nodes, ImuSample& out) {
   out.gyro = gyro;
   out.accel = accel;
   out.dt_s = dt;
+  out.increments = spec_.convention;
   out.low_rate = false;
 }
 

@@ -24,15 +24,13 @@
 
 namespace navfuse::sim {
 
-enum class IncrementConvention : std::uint8_t {
-  kCompensated = 0,  // attitude-change rotation vector and start-frame delta-v (default)
-  kRawIntegral = 1,  // integral of omega_ib_s dt and f_ib_s dt in the moving sensor frame
-};
-
 struct ImuSpec {
   double rate_hz = 200.0;                          // output rate; 1e9 / rate must be whole ns
   ImuQuantity quantity = ImuQuantity::kIncrements;  // increments over 1/rate, or rates at the stamp
-  IncrementConvention convention = IncrementConvention::kCompensated;
+  // kCompensated: attitude-change rotation vector and start-frame delta-v (a VN-300's);
+  // kRawIntegrals: integrals of omega_ib_s dt and f_ib_s dt in the moving sensor frame (a MIP
+  // device's). `navfuse sim` sets the one of the format it writes (FrontendInfo::imu_increments).
+  ImuIncrements convention = ImuIncrements::kCompensated;
   SensorFrame frame = SensorFrame::kSensor;  // kVehicle: output rotated back by the mounting
   Eigen::Vector3d mounting_rpy_deg = Eigen::Vector3d::Zero();  // sensor -> vehicle, 3-2-1 (DESIGN.md)
   ImuErrorSpec errors{};

@@ -88,6 +88,7 @@ SimReport run_sim(const SimOptions& options) {
     scenario.wheel.m_per_tick = options.wheel_tick_m;
   }
   const frontends::FrontendInfo& frontend = frontend_or_throw(options.format);
+  scenario.imu.convention = frontend.imu_increments;
   const frontends::FrontendInfo* wheel_frontend = nullptr;
   if (!options.wheel_out_path.empty()) {
     wheel_frontend = odometry_input_frontend();

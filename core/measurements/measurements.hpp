@@ -38,7 +38,20 @@ struct MeasurementHeader {
 // Inertial
 enum class ImuQuantity : std::uint8_t {
   kRates = 0,       // gyro in rad/s, accel (specific force) in m/s^2, instantaneous
-  kIncrements = 1,  // delta angle in rad and delta velocity in m/s over dt_s (coning/sculling done)
+  kIncrements = 1,  // delta angle in rad and delta velocity in m/s over dt_s (see ImuIncrements)
+};
+// What a device's increments already contain. The two differ by second-order terms that are not
+// small in a turn: 0.5 dtheta x dv per interval is ~1e-3 m/s^2 at 15 m/s, 9 deg/s, 200 Hz.
+enum class ImuIncrements : std::uint8_t {
+  // Time integrals of the rate and the specific force in the moving sensor frame (MIP 0x80
+  // 0x07/0x08 "time integral", KF-GINS text files, rates times dt): the filter adds the coning,
+  // rotation and sculling terms itself.
+  kRawIntegrals = 0,
+  // Already coning- and sculling-integrated by the device: the attitude change's rotation vector,
+  // and the velocity change in the frame at the interval's start (VN-300 DeltaTheta/DeltaVel,
+  // "conning and sculling integration performed onboard", ICD 2.4.7-2.4.8). Added again, the
+  // rotation term biases every turn.
+  kCompensated = 1,
 };
 enum class SensorFrame : std::uint8_t {
   kSensor = 0,   // the IMU case frame: the configured mounting rotates it into the vehicle frame
@@ -51,6 +64,7 @@ struct ImuSample {
   Eigen::Vector3d gyro = Eigen::Vector3d::Zero();   // rad/s or rad (see quantity)
   Eigen::Vector3d accel = Eigen::Vector3d::Zero();  // m/s^2 or m/s (see quantity)
   double dt_s = 0.0;         // integration interval for increments; nominal period for rates (0: unknown)
+  ImuIncrements increments = ImuIncrements::kRawIntegrals;  // for kIncrements: what they contain
   bool low_rate = false;     // device documents a low output rate (UM220 GYOACC: 5-10 Hz)
   std::uint8_t saturation = 0;  // kSatGyroX.. bits: a saturated axis must not be trusted
   static constexpr std::uint32_t kValidGyro = 1u << 0;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/config/config.hpp"
+#include "core/measurements/measurements.hpp"
 #include "frontends/common/device_command.hpp"
 #include "frontends/common/device_error_class.hpp"
 #include "frontends/common/setup_step.hpp"
@@ -46,6 +47,9 @@ struct FrontendInfo {
   // `navfuse sim --wheel-out`: this protocol is the one a host uses to send wheel / vehicle speed
   // to a fusion device, so simulated odometry is written in it.
   bool odometry_input = false;
+  // `navfuse sim`: what the protocol's IMU increments contain (a VN-300's are coning- and
+  // sculling-integrated on board); the decoder stamps the same on every ImuSample it makes.
+  ImuIncrements imu_increments = ImuIncrements::kRawIntegrals;
   // Formats whose bytes do not carry the GPS week (imutxt: seconds of week only) are decoded in a
   // week given from outside; nullptr for every format that times itself.
   std::unique_ptr<StreamDecoder> (*make_decoder_in_week)(std::int32_t gps_week) = nullptr;

@@ -361,6 +361,7 @@ bool AsciiMapper::map_register(int id, std::span<const double> v, DecodeSink& si
       stamp_header(s, stamp);
       s.frame = options_.imu_frame;
       s.quantity = ImuQuantity::kIncrements;
+      s.increments = ImuIncrements::kCompensated;  // as the binary DeltaTheta/DeltaVel (ICD 2.4.7-2.4.8)
       s.dt_s = v[0];
       s.gyro = v3(v, 1) * kDegToRad;  // DeltaTheta in degrees (Reg 80, L4640-4674)
       s.accel = v3(v, 4);

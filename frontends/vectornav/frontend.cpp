@@ -42,6 +42,7 @@ const FrontendInfo& frontend() {
       .device_errors = {.roll_pitch_std_rad = 0.05 * rot::kDegToRad,
                         .heading_std_rad = 0.2 * rot::kDegToRad,
                         .rate_is_imu_rate = true},
+      .imu_increments = ImuIncrements::kCompensated,
   };
   return info;
 }

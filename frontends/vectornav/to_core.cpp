@@ -113,6 +113,8 @@ int BinaryMapper::map_imu(const BinaryMessage& m, const Stamp& stamp, DecodeSink
     // increments cover exactly its own DeltaTime, ending at the message time; nothing is
     // accumulated across messages. A delta-velocity without DeltaTheta has no interval.
     s.quantity = ImuQuantity::kIncrements;
+    // Coning- and sculling-integrated on board at 800 Hz (ICD 2.4.7-2.4.8).
+    s.increments = ImuIncrements::kCompensated;
     if (theta && !(std::isfinite(f.delta_time_s) && f.delta_time_s > 0.0f)) return 1;
     s.dt_s = theta ? f.delta_time_s : 0.0;
     if (theta) {

@@ -169,7 +169,7 @@ TEST(ImuModel, CompensatedIncrementsAgreeWithRawIntegralsToSecondOrder) {
   spec.segments = {MotionSegment::accelerate(15.0, 5.0), MotionSegment::turn(90.0 * kDeg, 6.0)};
   const Trajectory traj(spec, kStart);
   ImuSpec comp_spec, raw_spec;
-  raw_spec.convention = IncrementConvention::kRawIntegral;
+  raw_spec.convention = ImuIncrements::kRawIntegrals;
   ImuModel comp(comp_spec, 1), raw(raw_spec, 1);
   const auto nodes = interval(traj, 8.0, comp);  // mid-turn, yaw rate ~0.52 rad/s
   ImuSample a, b;

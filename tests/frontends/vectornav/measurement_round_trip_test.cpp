@@ -60,6 +60,8 @@ TEST(VnMeasurementRoundTrip, ImuRatesAndIncrements) {
     expect_near_rel(d.accel, s.accel, 50);
     if (s.quantity == ImuQuantity::kIncrements) {
       EXPECT_NEAR(d.dt_s, 0.005, 1e-9);
+      // DeltaTheta/DeltaVel are coning- and sculling-integrated on board (ICD 2.4.7-2.4.8).
+      EXPECT_EQ(d.increments, ImuIncrements::kCompensated);
     } else if (i > 1) {
       EXPECT_NEAR(d.dt_s, 0.010, 1e-9);  // spacing of consecutive rate samples
     }
