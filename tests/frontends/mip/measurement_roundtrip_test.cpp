@@ -64,6 +64,8 @@ TEST_F(MipMeasurementRoundTrip, ImuRatesAndIncrements) {
     EXPECT_EQ(d.header.time_source, TimeSource::kGps);
     EXPECT_EQ(d.header.valid, m.header.valid);
     EXPECT_EQ(d.quantity, m.quantity);
+    // Delta theta / delta velocity are time integrals (0x80 0x07/0x08): the filter compensates them.
+    EXPECT_EQ(d.increments, ImuIncrements::kRawIntegrals);
     EXPECT_EQ(d.saturation, m.saturation);
     EXPECT_DOUBLE_EQ(d.dt_s, m.dt_s);
     near3(d.gyro, m.gyro);
