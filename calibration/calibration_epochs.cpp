@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "core/measurements/imu_increments.hpp"
 #include "core/rotation/rotation.hpp"
 
 namespace navfuse::calib {
@@ -49,9 +50,9 @@ StartFrameIncrements start_frame_increments(const std::vector<ImuSample>& imu, s
     prev_dtheta = p.gyro_rps * p.dt_s;
     prev_dvel = p.accel_mps2 * p.dt_s;
   }
-  const Eigen::Vector3d dth = out.dtheta_rad, dv = out.dvel_mps;
-  out.dvel_mps = dv + 0.5 * dth.cross(dv) + (prev_dtheta.cross(dv) + prev_dvel.cross(dth)) / 12.0;
-  out.dtheta_rad = dth + prev_dtheta.cross(dth) / 12.0;
+  const StartFrameIncrement b = start_frame_increment(out.dtheta_rad, out.dvel_mps, prev_dtheta, prev_dvel);
+  out.dtheta_rad = b.phi_rad;
+  out.dvel_mps = b.dvel_mps;
   return out;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/geodesy/gravity.hpp"
+#include "core/measurements/imu_increments.hpp"
 #include "core/rotation/rotation.hpp"
 
 namespace navfuse::filter {
@@ -40,21 +41,20 @@ void strapdown_step(NavState& x, StrapdownMemory& mem, const ImuIncrement& imu,
   const Eigen::Vector3d& dv = imu.dvel_mps;
   const Eigen::Vector3d prev_dth = mem.has_prev ? mem.prev_dtheta_rad : dth;
   const Eigen::Vector3d prev_dv = mem.has_prev ? mem.prev_dvel_mps : dv;
-  // A device's compensated increments already hold the terms below (ImuIncrements).
-  const bool raw = imu.contents == ImuIncrements::kRawIntegrals;
+  // Coning, rotation and sculling terms for raw integrals; a device's compensated increments
+  // already hold them (ImuIncrements).
+  const StartFrameIncrement body = imu.contents == ImuIncrements::kRawIntegrals
+                                       ? start_frame_increment(dth, dv, prev_dth, prev_dv)
+                                       : StartFrameIncrement{dth, dv};
 
-  // Velocity: rotation and sculling compensation of the increment (Savage 1998 part 2; the
-  // two-sample form with the previous interval as in Shin 2005 §2.2), then the half-interval
-  // rotation of the n frame, (I - [zeta x] / 2).
-  const Eigen::Vector3d dv_rot = raw ? Eigen::Vector3d(0.5 * dth.cross(dv)) : Eigen::Vector3d::Zero();
-  const Eigen::Vector3d dv_scul =
-      raw ? Eigen::Vector3d((prev_dth.cross(dv) + prev_dv.cross(dth)) / 12.0) : Eigen::Vector3d::Zero();
+  // Velocity: the start-frame increment, then the half-interval rotation of the n frame,
+  // (I - [zeta x] / 2).
   const Eigen::Vector3d w_ie = earth.earth_rate_ned_rps;
   const Eigen::Vector3d w_en = earth.transport_rate(x.vel_ned_mps);
   const Eigen::Vector3d zeta = (w_ie + w_en) * dt;
   const Eigen::Matrix3d c_nb = x.q_nb.toRotationMatrix();
   const Eigen::Vector3d dv_f_n =
-      (Eigen::Matrix3d::Identity() - 0.5 * rot::skew(zeta)) * (c_nb * (dv + dv_rot + dv_scul));
+      (Eigen::Matrix3d::Identity() - 0.5 * rot::skew(zeta)) * (c_nb * body.dvel_mps);
   // Gravity and Coriolis (Groves 2nd ed. §5.4, local-navigation-frame velocity update).
   const Eigen::Vector3d dv_g =
       (earth.gravity_ned_mps2 - (2.0 * w_ie + w_en).cross(x.vel_ned_mps)) * dt;
@@ -71,10 +71,8 @@ void strapdown_step(NavState& x, StrapdownMemory& mem, const ImuIncrement& imu,
   const double lat_mid = 0.5 * (lat_old + x.lat_rad);
   x.lon_rad += v_mid.y() / ((earth.radii.prime_vertical_m + h_mid) * std::cos(lat_mid)) * dt;
 
-  // Attitude: body rotation vector with the two-sample coning term (Savage 1998 part 1; Shin
-  // 2005 §2.2), and the rotation of the n frame over the interval.
-  const Eigen::Vector3d phi_b = raw ? Eigen::Vector3d(dth + prev_dth.cross(dth) / 12.0) : dth;
-  x.q_nb = (rot::quat_from_rotvec(-zeta) * x.q_nb * rot::quat_from_rotvec(phi_b)).normalized();
+  // Attitude: the body's rotation vector, and the rotation of the n frame over the interval.
+  x.q_nb = (rot::quat_from_rotvec(-zeta) * x.q_nb * rot::quat_from_rotvec(body.phi_rad)).normalized();
 
   x.time_ns = imu.time_ns;
   mem.prev_dtheta_rad = dth;
