@@ -6,7 +6,9 @@
 // by metres. Truth: apps/sim (trajectory from closed-form kinematics, IMU by Simpson quadrature).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <optional>
 
 #include "apps/sim/scenarios.hpp"
 #include "apps/sim/simulator.hpp"
