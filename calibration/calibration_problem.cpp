@@ -18,6 +18,7 @@
 #include "calibration/local_frame.hpp"
 #include "calibration/odometry_factors.hpp"
 #include "calibration/preintegration_factor.hpp"
+#include "calibration/vehicle_velocity_factor.hpp"
 #include "core/rotation/rotation.hpp"
 
 namespace navfuse::calib {
@@ -287,14 +288,25 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
     problem.SetParameterBlockConstant(lever);
     ++result.external_residuals;
   }
+  std::uint64_t vehicle_velocity_residuals = 0;
   for (const ExternalVelocity& m : log.external_velocities) {
-    if (m.frame == VelocityFrame::kVehicle || !usable_axes(m.value_mps, m.std_mps, m.header.valid)) continue;
+    if (!usable_axes(m.value_mps, m.std_mps, m.header.valid)) continue;
     Epoch* e = epoch_near(m.header.time_ns);
     if (e == nullptr) continue;
+    const double tau = static_cast<double>(m.header.time_ns - e->time_ns) / kNsPerS;
+    if (m.frame == VelocityFrame::kVehicle) {
+      problem.AddResidualBlock(
+          new ceres::AutoDiffCostFunction<VehicleVelocityFactor, 3, 3, 4, 2, 1>(new VehicleVelocityFactor(
+              m.value_mps, axis_sqrt_information(m.std_mps, m.header.valid, Eigen::Matrix3d::Identity()),
+              m.lever_arm_m, tau, e->knowns)),
+          new ceres::HuberLoss(options.huber_sigmas), e->v.data(), e->q.data(), g.mount, g.dt);
+      ++vehicle_velocity_residuals;
+      ++result.external_residuals;
+      continue;
+    }
     const Eigen::Matrix3d t_from_axes = m.frame == VelocityFrame::kNed ? frame.rot_from_ned({e->llh}) : frame.rot_from_ecef();
     const Eigen::Matrix3d axes_from_t = t_from_axes.transpose();
     double* lever = fixed_lever(m.lever_arm_m);
-    const double tau = static_cast<double>(m.header.time_ns - e->time_ns) / kNsPerS;
     problem.AddResidualBlock(
         new ceres::AutoDiffCostFunction<GnssVelocityFactor, 3, 3, 4, 3, 2, 1>(new GnssVelocityFactor(
             axes_from_t.transpose() * m.value_mps, axis_sqrt_information(m.std_mps, m.header.valid, axes_from_t), tau,
@@ -332,7 +344,8 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
       ++result.nhc_residuals;
     }
   }
-  result.mounting_estimated = result.speed_residuals + result.nhc_residuals + heading_residuals > 0;
+  result.mounting_estimated =
+      result.speed_residuals + result.nhc_residuals + heading_residuals + vehicle_velocity_residuals > 0;
   result.mounting_is_residual = setup.imu_in_vehicle_frame;
   if (!result.mounting_estimated) {
     problem.SetParameterBlockConstant(g.mount);

@@ -1,22 +1,24 @@
 // The batch calibration over a whole log (Ceres): states at the GNSS epochs tied by IMU
 // preintegration (preintegration_factor.hpp), GNSS position and velocity through the lever arm and
 // the IMU clock offset, dual-antenna heading through the mounting (gnss_factors.hpp; external
-// aiding's positions, velocities and headings through the same factors at their own lever arms), wheel speed with an odometer scale and the
-// non-holonomic constraint through the mounting (odometry_factors.hpp), robust (Huber) losses on
-// every aiding residual so outliers do not drag the fit. The states start from the smoothed
-// solution (filter/smoother); the installation from the configuration.
+// aiding's positions, velocities and headings through the same factors at their own lever arms,
+// its vehicle-frame velocities through the mounting: vehicle_velocity_factor.hpp), wheel speed
+// with an odometer scale and the non-holonomic constraint through the mounting
+// (odometry_factors.hpp), robust (Huber) losses on every aiding residual so outliers do not drag
+// the fit. The states start from the smoothed solution (filter/smoother); the installation from
+// the configuration.
 //
 // Epochs: the IMU sample nearest each GNSS fix (on the IMU clock, through the configured offset);
 // where fixes are further apart than max_epoch_spacing_s (outages, 1 Hz receivers) samples are
 // added so odometry and NHC are seen throughout. An IMU gap longer than max_imu_gap_s breaks the
 // chain: the pieces share only the calibration parameters.
 //
-// Estimated: lever arm, mounting pitch and yaw about the vehicle axes (when odometry, NHC or a
-// dual-antenna heading sees them; the vehicle roll is held; mounting_rotation.hpp),
-// the IMU time offset, the odometer scale (with wheel speeds), gyro and accelerometer biases
-// (constant over the log; their drift is allowed for in the preintegration covariance). Their std
-// devs come from ceres::Covariance, scaled up by the fit's variance factor when residuals are
-// larger than their stated noise (never down).
+// Estimated: lever arm, mounting pitch and yaw about the vehicle axes (when odometry, NHC, a
+// dual-antenna heading or a vehicle-frame velocity sees them; the vehicle roll is held;
+// mounting_rotation.hpp), the IMU time offset, the odometer scale (with wheel speeds), gyro and
+// accelerometer biases (constant over the log; their drift is allowed for in the preintegration
+// covariance). Their std devs come from ceres::Covariance, scaled up by the fit's variance factor
+// when residuals are larger than their stated noise (never down).
 #pragma once
 
 #include "calibration/calibration_log.hpp"

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <random>
 
 #include <gtest/gtest.h>
 
@@ -185,6 +186,67 @@ TEST(CalibrationProblem, ExternalAidingAloneFindsTheMountingYawAndTheOffset) {
   EXPECT_LT(std::abs(dt_err_s), kSigmas * r.imu_time_offset_s.std);
   // The GNSS lever arm has no measurement: it comes back at its prior.
   EXPECT_NEAR(r.gnss_lever_arm_m.std.x(), CalibrationOptions{}.lever_arm_prior_std_m, 1e-3);
+}
+
+// A body-frame velocity aid (MIP (0x13,0x2A): a radar or a visual odometer) with external
+// positions and nothing else: no odometry, no NHC, no heading. Its sideways and vertical
+// components see the mounting's yaw and pitch as the NHC does. Made from the truth at 10 Hz with
+// 5 cm/s of white noise per axis, at the IMU (lever arm zero).
+TEST(CalibrationProblem, AVehicleFrameVelocityAidFindsTheMounting) {
+  const sim::Scenario scenario = sim::make_scenario("calibration_drive");
+  const testing::StartingSetup start{.lever_arm_m = scenario.gnss.lever_arm_m,
+                                     .mounting_rpy_deg = Eigen::Vector3d(scenario.imu.mounting_rpy_deg.x(), 0.0, 0.0),
+                                     .imu_time_offset_s = 0.0};
+  testing::SimLog s = testing::sim_log(scenario, start);
+  CalibrationLog& log = s.log;
+  log.setup.land_vehicle = false;
+  log.speeds.clear();
+  for (const GnssPosition& p : log.positions) {
+    if ((p.header.valid & GnssPosition::kValidPosition) == 0 || p.fix == GnssFixType::kNone) continue;
+    ExternalPosition e;
+    e.header = p.header;
+    e.header.valid = ExternalPosition::kValidX | ExternalPosition::kValidY | ExternalPosition::kValidZ;
+    e.value = Eigen::Vector3d(p.lat_rad, p.lon_rad, p.height_m);
+    e.std_m = p.cov_ned_m2.diagonal().cwiseSqrt();
+    e.lever_arm_m = scenario.gnss.lever_arm_m;
+    log.external_positions.push_back(e);
+  }
+  std::mt19937_64 rng(16);
+  std::normal_distribution<double> noise(0.0, 0.05);
+  for (std::size_t i = 0; i < log.trajectory.size(); i += 20) {  // the truth (configured offset zero)
+    const TrajectoryPoint& t = log.trajectory[i];
+    ExternalVelocity e;
+    e.header.time_ns = t.time_ns;
+    e.header.valid = ExternalVelocity::kValidX | ExternalVelocity::kValidY | ExternalVelocity::kValidZ;
+    e.frame = VelocityFrame::kVehicle;
+    e.value_mps = t.q_nv.conjugate() * t.vel_ned_mps + Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
+    e.std_mps = Eigen::Vector3d::Constant(0.05);
+    log.external_velocities.push_back(e);
+  }
+  log.positions.clear();
+  log.velocities.clear();
+  const CalibrationResult r = calibrate(log);
+  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.covariance_ok) << r.message;
+  ASSERT_TRUE(r.mounting_estimated);
+  EXPECT_EQ(r.speed_residuals + r.nhc_residuals + r.gnss_heading_residuals, 0u);
+  const Eigen::Vector3d mount_err_deg = r.mounting_rpy_rad.value * rot::kRadToDeg - scenario.imu.mounting_rpy_deg;
+  const double dt_err_s = r.imu_time_offset_s.value - scenario.imu.time_offset_s;
+  std::printf("%llu external residuals: mounting error pitch %.4f yaw %.4f deg (std %.4f %.4f), time offset error "
+              "%.3f ms (std %.3f); %s\n",
+              static_cast<unsigned long long>(r.external_residuals), mount_err_deg.y(), mount_err_deg.z(),
+              r.mounting_rpy_rad.std.y() * rot::kRadToDeg, r.mounting_rpy_rad.std.z() * rot::kRadToDeg, dt_err_s * 1e3,
+              r.imu_time_offset_s.std * 1e3, r.message.c_str());
+  for (int i = 1; i < 3; ++i) {
+    EXPECT_LT(std::abs(mount_err_deg[i]), 0.1) << "angle " << i;
+    EXPECT_LT(std::abs(mount_err_deg[i]), kSigmas * r.mounting_rpy_rad.std[i] * rot::kRadToDeg) << "angle " << i;
+  }
+  EXPECT_LT(std::abs(dt_err_s), 0.002);
+  EXPECT_LT(std::abs(dt_err_s), kSigmas * r.imu_time_offset_s.std);
+  // Without the velocity aid nothing sees the mounting.
+  log.external_velocities.clear();
+  const CalibrationResult without = calibrate(log);
+  EXPECT_FALSE(without.mounting_estimated);
 }
 
 TEST(CalibrationProblem, NothingToCalibrateSaysWhy) {

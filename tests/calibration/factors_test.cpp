@@ -7,6 +7,7 @@
 #include "calibration/mounting_rotation.hpp"
 #include "calibration/odometry_factors.hpp"
 #include "calibration/preintegration_factor.hpp"
+#include "calibration/vehicle_velocity_factor.hpp"
 #include "core/rotation/rotation.hpp"
 
 namespace navfuse::calib {
@@ -139,6 +140,38 @@ TEST(CalibrationFactors, WheelSpeedAndNhcSeeTheMounting) {
   const NhcFactor rear(1.0, 1.0, Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, 0.5), Eigen::Vector3d(-1.2, 0, 0));
   ASSERT_TRUE(rear(v, q.data(), straight, r));
   EXPECT_NEAR(r[0], -0.6, 1e-9);
+}
+
+TEST(CalibrationFactors, VehicleFrameVelocityTurnsWithTheVehicle) {
+  // Driving east at 10 m/s, sensor axes the vehicle's (yaw 90 deg), turning right at 0.5 rad/s:
+  // the velocity swings south at a = (-5, 0, 0) m/s^2. Over tau - dt = 0.1 - 0.05 s the tangent
+  // velocity becomes (-0.25, 10, 0), (10, 0.25, 0) in the epoch's sensor axes, and the axes turn
+  // by omega x v d = (0, 0.25, 0): (10, 0, 0), no sideways velocity. The aiding sits 1.2 m behind
+  // the IMU and slides left at omega x l = (0, -0.6, 0). Measured (10.1, -0.5, 0.3) with std
+  // (0.1, 0.2, 1) and z invalid: residual (-1, -0.5, 0).
+  EpochKnowns k;
+  k.rate_s_rps = Eigen::Vector3d(0.0, 0.0, 0.5);
+  k.accel_t_mps2 = Eigen::Vector3d(-5.0, 0.0, 0.0);
+  const double v[3] = {0, 10, 0}, level[2] = {0, 0}, dt[1] = {0.05};
+  const auto q = yaw_quat(90.0 * kDeg);
+  const VehicleVelocityFactor f(Eigen::Vector3d(10.1, -0.5, 0.3),
+                                axis_sqrt_information(Eigen::Vector3d(0.1, 0.2, 1.0), 0b011u, Eigen::Matrix3d::Identity()),
+                                Eigen::Vector3d(-1.2, 0.0, 0.0), 0.1, k);
+  double r[3];
+  ASSERT_TRUE(f(v, q.data(), level, dt, r));
+  EXPECT_NEAR(r[0], -1.0, 1e-9);
+  EXPECT_NEAR(r[1], -0.5, 1e-9);
+  EXPECT_EQ(r[2], 0.0);
+  // Not turning, the IMU 1 deg in yaw from the vehicle (residual yaw): the vehicle sees
+  // (10 cos 1, 10 sin 1, 0) m/s against a measured (10, 0, 0) with unit std.
+  const double yawed[2] = {0.0, 1.0 * kDeg}, now[1] = {0.0};
+  const VehicleVelocityFactor g(Eigen::Vector3d(10.0, 0.0, 0.0),
+                                axis_sqrt_information(Eigen::Vector3d::Ones(), 0b111u, Eigen::Matrix3d::Identity()),
+                                Eigen::Vector3d::Zero(), 0.0, EpochKnowns{});
+  ASSERT_TRUE(g(v, q.data(), yawed, now, r));
+  EXPECT_NEAR(r[0], 10.0 * std::cos(1.0 * kDeg) - 10.0, 1e-9);
+  EXPECT_NEAR(r[1], 10.0 * std::sin(1.0 * kDeg), 1e-9);
+  EXPECT_NEAR(r[2], 0.0, 1e-9);
 }
 
 TEST(CalibrationFactors, TheMountingResidualIsAboutTheVehicleAxesWhateverTheSensorsOrientation) {
