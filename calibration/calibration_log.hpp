@@ -57,7 +57,9 @@ struct CalibrationSetup {
   // Multiplier on the white-noise variances above, found by calibrate() from the IMU factors' own
   // residuals (vibration far above the data sheet); 1 at the start.
   double imu_noise_scale = 1.0;
-  double gyro_bias_std_rps = 1e-5;  // bias instability: a constant bias's allowance per interval
+  // Bias drift as a random walk's density (per sqrt(s)): the allowance per interval and between
+  // bias segments (bias_segments.hpp).
+  double gyro_bias_std_rps = 1e-5;
   double accel_bias_std_mps2 = 1e-4;
   double gnss_velocity_std_scale = 1.0;
   double gyro_scale_std = 1000e-6;  // prior std of the scale-factor errors (fraction)
@@ -70,9 +72,8 @@ struct CalibrationLog {
   std::vector<GnssPosition> positions;  // primary antenna, GNSS time base, covariance scaled as the filter does
   std::vector<GnssVelocity> velocities;
   std::vector<GnssHeading> headings;    // dual-antenna, GNSS time base
-  // External aiding (MIP 0x13 semantics), GNSS time base (their configured offset added). A
-  // velocity in the vehicle frame is not used (a body-frame velocity, as odometry's, would need
-  // its own factor).
+  // External aiding (MIP 0x13 semantics), GNSS time base (their configured offset added); a
+  // velocity in the vehicle frame goes through the mounting (vehicle_velocity_factor.hpp).
   std::vector<ExternalPosition> external_positions;
   std::vector<ExternalVelocity> external_velocities;
   std::vector<ExternalHeading> external_headings;

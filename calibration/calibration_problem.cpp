@@ -12,6 +12,7 @@
 
 #include <ceres/ceres.h>
 
+#include "calibration/bias_segments.hpp"
 #include "calibration/calibration_epochs.hpp"
 #include "calibration/gnss_factors.hpp"
 #include "calibration/imu_preintegration.hpp"
@@ -32,8 +33,6 @@ struct Globals {
   double mount[2] = {0, 0};  // residual vehicle pitch, yaw about the configured mounting (mounting_dcm)
   double dt[1] = {0};
   double scale[1] = {1};
-  double bg[3] = {0, 0, 0};
-  double ba[3] = {0, 0, 0};
   double sg[3] = {0, 0, 0};
   double sa[3] = {0, 0, 0};
 };
@@ -120,11 +119,9 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
   result.epochs = epochs.size();
 
   Globals g;
-  for (int i = 0; i < 3; ++i) {
-    g.lever[i] = setup.gnss_lever_arm_m[i];
-    g.bg[i] = plan.bg0[i];
-    g.ba[i] = plan.ba0[i];
-  }
+  for (int i = 0; i < 3; ++i) g.lever[i] = setup.gnss_lever_arm_m[i];
+  BiasSegments biases(epochs.front().time_ns, epochs.back().time_ns, options.bias_segments, setup.gyro_bias_std_rps,
+                      setup.accel_bias_std_mps2, plan.bg0, plan.ba0);
   g.mount[0] = mount_residual_rad.x();
   g.mount[1] = mount_residual_rad.y();
   g.dt[0] = setup.imu_time_offset_s;
@@ -154,12 +151,15 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
     }
     pre.add_bias_drift(setup.gyro_bias_std_rps, setup.accel_bias_std_mps2);
     const Eigen::Vector3d gravity = 0.5 * (frame.gravity(a.llh) + frame.gravity(b.llh));
+    const std::size_t seg = biases.at(a.time_ns);  // the interval's start decides
     imu_blocks.push_back(problem.AddResidualBlock(
         new ceres::AutoDiffCostFunction<PreintegrationFactor, 9, 3, 3, 4, 3, 3, 4, 3, 3, 3, 3>(
             new PreintegrationFactor(pre, gravity, frame.earth_rate())),
-        nullptr, a.p.data(), a.v.data(), a.q.data(), b.p.data(), b.v.data(), b.q.data(), g.bg, g.ba, g.sg, g.sa));
+        nullptr, a.p.data(), a.v.data(), a.q.data(), b.p.data(), b.v.data(), b.q.data(), biases.gyro(seg),
+        biases.accel(seg), g.sg, g.sa));
     ++result.imu_factors;
   }
+  add_bias_steps(problem, biases);
   if (result.imu_factors == 0) {
     result.message = "no two epochs are linked by IMU samples";
     return result;
@@ -392,19 +392,18 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
   result.mounting_residual_rad.value = Eigen::Vector2d(g.mount[0], g.mount[1]);
   result.mounting_rpy_rad.value = mounting_rpy(result.mounting_residual_rad.value, c_vs0);
   result.imu_time_offset_s.value = g.dt[0];
-  result.gyro_bias_rps.value = Eigen::Vector3d(g.bg[0], g.bg[1], g.bg[2]);
-  result.accel_bias_mps2.value = Eigen::Vector3d(g.ba[0], g.ba[1], g.ba[2]);
   result.gyro_scale.value = Eigen::Vector3d(g.sg[0], g.sg[1], g.sg[2]);
   result.accel_scale.value = Eigen::Vector3d(g.sa[0], g.sa[1], g.sa[2]);
   if (result.speed_residuals > 0) result.odometer_scale = Estimate1{.value = g.scale[0], .std = 0.0};
 
   // Uncertainties: ceres::Covariance on the calibration blocks, scaled by the variance factor of
   // the fit when it exceeds one (residuals larger than their stated noise).
-  std::vector<const double*> blocks = {g.lever, g.dt, g.bg, g.ba, g.sg, g.sa};
+  std::vector<const double*> blocks = {g.lever, g.dt, g.sg, g.sa};
   if (result.mounting_estimated) blocks.push_back(g.mount);
   if (result.speed_residuals > 0) blocks.push_back(g.scale);
   std::vector<std::pair<const double*, const double*>> pairs;
   for (const double* b : blocks) pairs.emplace_back(b, b);
+  add_bias_covariance_pairs(biases, pairs);
   ceres::Covariance::Options cov_options;
   cov_options.algorithm_type = ceres::SPARSE_QR;
   cov_options.num_threads = options.threads;
@@ -418,10 +417,7 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
     result.gnss_lever_arm_m.std = k * Eigen::Vector3d(s[0], s[1], s[2]);
     result.covariance_ok = result.covariance_ok && block_stds(covariance, g.dt, 1, s);
     result.imu_time_offset_s.std = k * s[0];
-    result.covariance_ok = result.covariance_ok && block_stds(covariance, g.bg, 3, s);
-    result.gyro_bias_rps.std = k * Eigen::Vector3d(s[0], s[1], s[2]);
-    result.covariance_ok = result.covariance_ok && block_stds(covariance, g.ba, 3, s);
-    result.accel_bias_mps2.std = k * Eigen::Vector3d(s[0], s[1], s[2]);
+    result.covariance_ok = bias_estimates(&covariance, biases, k, result) && result.covariance_ok;
     result.covariance_ok = result.covariance_ok && block_stds(covariance, g.sg, 3, s);
     result.gyro_scale.std = k * Eigen::Vector3d(s[0], s[1], s[2]);
     result.covariance_ok = result.covariance_ok && block_stds(covariance, g.sa, 3, s);
@@ -434,6 +430,7 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
     }
     if (result.odometer_scale && block_stds(covariance, g.scale, 1, s)) result.odometer_scale->std = k * s[0];
   } else {
+    bias_estimates(nullptr, biases, k, result);
     result.message += "; covariance not computable (a calibration parameter is unobservable in this log)";
   }
   return result;

@@ -16,11 +16,13 @@
 // Estimated: lever arm, mounting pitch and yaw about the vehicle axes (when odometry, NHC, a
 // dual-antenna heading or a vehicle-frame velocity sees them; the vehicle roll is held;
 // mounting_rotation.hpp), the IMU time offset, the odometer scale (with wheel speeds), gyro and
-// accelerometer biases (constant over the log; their drift is allowed for in the preintegration
-// covariance). Their std devs come from ceres::Covariance, scaled up by the fit's variance factor
+// accelerometer biases (constant within segments of the log joined by the configured drift,
+// bias_segments.hpp; the drift inside an interval is allowed for in the preintegration
+// covariance) and scale factors (constant). Their std devs come from ceres::Covariance, scaled up by the fit's variance factor
 // when residuals are larger than their stated noise (never down).
 #pragma once
 
+#include "calibration/bias_segments.hpp"
 #include "calibration/calibration_log.hpp"
 #include "calibration/calibration_result.hpp"
 
@@ -45,6 +47,7 @@ struct CalibrationOptions {
   // `max_imu_noise_scale` in all (1e4: std x 100, beyond anything vibration does to a bolted IMU).
   double imu_variance_threshold = 1.5;
   double max_imu_noise_scale = 1e4;
+  BiasSegmentOptions bias_segments;
 };
 
 // Never throws on bad data: a log that cannot be calibrated comes back with `message` saying why

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -36,8 +37,15 @@ struct CalibrationResult {
   bool mounting_is_residual = false;
   Estimate1 imu_time_offset_s;   // the config key's meaning: added to IMU stamps
   std::optional<Estimate1> odometer_scale;  // measured / true speed; none without wheel speeds
-  Estimate3 gyro_bias_rps;       // sensor frame, constant over the log
+  // Sensor frame: the mean over the log of the biases in `bias_segments` (bias_segments.hpp), its
+  // std dev with their correlations.
+  Estimate3 gyro_bias_rps;
   Estimate3 accel_bias_mps2;
+  struct BiasSegment {
+    std::int64_t start_ns = 0;  // IMU clock
+    Estimate3 gyro_bias_rps, accel_bias_mps2;
+  };
+  std::vector<BiasSegment> bias_segments;  // time order; one when the biases are held constant
   Estimate3 gyro_scale;   // fractional scale-factor errors, sensor frame (measured = (1 + s) true)
   Estimate3 accel_scale;
 

@@ -12,6 +12,9 @@
 namespace navfuse::apps {
 namespace {
 
+constexpr double kMps2PerMg = 9.80665e-3;  // standard gravity / 1000
+constexpr double kDegHPerRps = rot::kRadToDeg * 3600.0;
+
 double rounded(double v, double step) { return std::round(v / step) * step; }
 
 // An estimate is written into the configuration only when the log observed it: its std dev at
@@ -75,12 +78,12 @@ std::vector<Row> rows(const calib::CalibrationResult& r) {
     out.push_back({"odometer scale (measured/true)", "%", (r.odometer_scale->value - 1.0) * 100.0, r.odometer_scale->std * 100.0});
   }
   for (int i = 0; i < 3; ++i) {
-    out.push_back({std::string("gyro bias ") + axes[i], "deg/h", r.gyro_bias_rps.value[i] * rot::kRadToDeg * 3600.0,
-                   r.gyro_bias_rps.std[i] * rot::kRadToDeg * 3600.0});
+    out.push_back({std::string("gyro bias ") + axes[i], "deg/h", r.gyro_bias_rps.value[i] * kDegHPerRps,
+                   r.gyro_bias_rps.std[i] * kDegHPerRps});
   }
   for (int i = 0; i < 3; ++i) {
-    out.push_back({std::string("accel bias ") + axes[i], "mg", r.accel_bias_mps2.value[i] / 9.80665e-3,
-                   r.accel_bias_mps2.std[i] / 9.80665e-3});
+    out.push_back({std::string("accel bias ") + axes[i], "mg", r.accel_bias_mps2.value[i] / kMps2PerMg,
+                   r.accel_bias_mps2.std[i] / kMps2PerMg});
   }
   for (int i = 0; i < 3; ++i) {
     out.push_back({std::string("gyro scale ") + axes[i], "ppm", r.gyro_scale.value[i] * 1e6, r.gyro_scale.std[i] * 1e6});
@@ -101,7 +104,7 @@ std::string solve_line(const calib::CalibrationResult& r) {
   std::ostringstream s;
   s << r.epochs << " epochs, " << r.imu_factors << " IMU factors, " << r.gnss_position_residuals << " GNSS positions, "
     << r.gnss_velocity_residuals << " velocities, " << r.gnss_heading_residuals << " headings, " << r.external_residuals
-    << " external aiding, " << r.speed_residuals << " wheel speeds, " << r.nhc_residuals << " NHC; " << r.iterations << " iterations, " << (r.converged ? "converged" : "NOT converged")
+    << " external aiding, " << r.speed_residuals << " wheel speeds, " << r.nhc_residuals << " NHC, " << r.bias_segments.size() << " bias segment(s); " << r.iterations << " iterations, " << (r.converged ? "converged" : "NOT converged")
     << ", GNSS position residual RMS " << number(r.position_rms_m, 3) << " m, IMU noise variances x"
     << number(r.imu_noise_scale, 2) << " (IMU residuals " << number(r.imu_variance_factor, 2) << " per dimension), "
     << number(r.wall_s, 1) << " s";
@@ -160,7 +163,16 @@ std::string calibration_yaml(const config::Config& base, const calib::Calibratio
     s << "# The IMU reports in the vehicle frame (the device applies its own mounting): the mounting above is\n"
          "# the residual to set in the device, not imu.mounting_rpy_deg (left as configured).\n";
   }
-  s << "# IMU biases and scale factors are this log's, sensor frame, for reference (no config key).\n";
+  s << "# IMU biases and scale factors are this log's, sensor frame, for reference (no config key); the\n"
+       "# biases are the mean over " << r.bias_segments.size() << " segment(s) of the log (bias_segments.hpp); each:\n";
+  for (const calib::CalibrationResult::BiasSegment& b : r.bias_segments) {
+    const double t_s = static_cast<double>(b.start_ns - r.bias_segments.front().start_ns) * 1e-9;
+    s << "#   from " << number(t_s, 1) << " s: gyro";
+    for (int i = 0; i < 3; ++i) s << " " << number(b.gyro_bias_rps.value[i] * kDegHPerRps, 2);
+    s << " deg/h, accel";
+    for (int i = 0; i < 3; ++i) s << " " << number(b.accel_bias_mps2.value[i] / kMps2PerMg, 3);
+    s << " mg\n";
+  }
   s << "# Solve: " << solve_line(r) << "\n";
   s << config::to_yaml(calibrated_config(base, r));
   return s.str();
@@ -185,6 +197,17 @@ std::string calibration_table(const calib::CalibrationResult& r) {
 nlohmann::ordered_json calibration_json(const calib::CalibrationResult& r) {
   nlohmann::ordered_json j;
   for (const Row& row : rows(r)) j["parameters"][row.name] = {{"estimate", row.value}, {"std", row.std}, {"unit", row.unit}};
+  for (const calib::CalibrationResult::BiasSegment& b : r.bias_segments) {
+    nlohmann::ordered_json seg;
+    seg["start_s"] = static_cast<double>(b.start_ns - r.bias_segments.front().start_ns) * 1e-9;
+    for (int i = 0; i < 3; ++i) {
+      seg["gyro_bias_deg_h"].push_back(b.gyro_bias_rps.value[i] * kDegHPerRps);
+      seg["gyro_bias_std_deg_h"].push_back(b.gyro_bias_rps.std[i] * kDegHPerRps);
+      seg["accel_bias_mg"].push_back(b.accel_bias_mps2.value[i] / kMps2PerMg);
+      seg["accel_bias_std_mg"].push_back(b.accel_bias_mps2.std[i] / kMps2PerMg);
+    }
+    j["bias_segments"].push_back(seg);
+  }
   j["epochs"] = r.epochs;
   j["imu_factors"] = r.imu_factors;
   j["gnss_position_residuals"] = r.gnss_position_residuals;
