@@ -27,10 +27,14 @@
 namespace navfuse::frontends::unicore {
 
 // NAVACC reports only 2-D horizontal RMS (L1360-L1363). The per-axis horizontal std is that RMS
-// over sqrt(2); the vertical std, which the device does not report, is set to the 2-D RMS itself
-// (GNSS vertical error is typically 1.4-2x the per-axis horizontal one): a stand-in, documented
-// so the filter may override it.
-inline constexpr double kVerticalStdPerHorizontalRms = 1.0;
+// over sqrt(2); the vertical std, which the device does not report, is 1.5 times the 2-D RMS: the
+// GPS SPS Performance Standard's global averages (4th ed. 2008, section 3.8: 9 m horizontal,
+// 15 m vertical, 95 %) give (15 / 1.96) / (9 / 1.73) = 1.47, 1.73 being the 95 % radius of a
+// circular 2-D error in RMS units. The same ratio for NAVVEL's single speed accuracy (Doppler
+// velocity sees the same geometry). Until 2026-11-29 it was 1.0, and the simulated UM220 log,
+// whose receiver has the usual 2:1 vertical to per-axis horizontal noise, showed vertical
+// position and velocity NIS of 2.0 (README, "make demo").
+inline constexpr double kVerticalStdPerHorizontalRms = 1.5;
 inline constexpr double kMillimetre = 1e-3;
 
 // NavSolution::device_status packs the latest SNRSTAT, one signed byte per field:
