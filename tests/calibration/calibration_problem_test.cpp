@@ -22,6 +22,21 @@ namespace {
 
 constexpr double kSigmas = 3.0;  // a reported std dev "covers" an error within this many
 
+// The receiver's fixes given again as external LLH positions at the antenna's lever arm (as
+// `navfuse aid` feeds them), their reported std devs per axis.
+void add_fixes_as_external_positions(CalibrationLog& log, const Eigen::Vector3d& lever_arm_m) {
+  for (const GnssPosition& p : log.positions) {
+    if ((p.header.valid & GnssPosition::kValidPosition) == 0 || p.fix == GnssFixType::kNone) continue;
+    ExternalPosition e;
+    e.header = p.header;
+    e.header.valid = ExternalPosition::kValidX | ExternalPosition::kValidY | ExternalPosition::kValidZ;
+    e.value = Eigen::Vector3d(p.lat_rad, p.lon_rad, p.height_m);
+    e.std_m = p.cov_ned_m2.diagonal().cwiseSqrt();
+    e.lever_arm_m = lever_arm_m;
+    log.external_positions.push_back(e);
+  }
+}
+
 TEST(CalibrationProblem, RecoversSimulatedInstallation) {
   const sim::Scenario scenario = sim::make_scenario("calibration_drive");
   const testing::StartingSetup start{.lever_arm_m = scenario.gnss.lever_arm_m + Eigen::Vector3d(0.3, -0.2, 0.4),
@@ -126,16 +141,7 @@ TEST(CalibrationProblem, ExternalAidingAloneFindsTheMountingYawAndTheOffset) {
   CalibrationLog& log = s.log;
   log.setup.land_vehicle = false;
   log.speeds.clear();
-  for (const GnssPosition& p : log.positions) {
-    if ((p.header.valid & GnssPosition::kValidPosition) == 0 || p.fix == GnssFixType::kNone) continue;
-    ExternalPosition e;
-    e.header = p.header;
-    e.header.valid = ExternalPosition::kValidX | ExternalPosition::kValidY | ExternalPosition::kValidZ;
-    e.value = Eigen::Vector3d(p.lat_rad, p.lon_rad, p.height_m);
-    e.std_m = p.cov_ned_m2.diagonal().cwiseSqrt();
-    e.lever_arm_m = scenario.gnss.lever_arm_m;
-    log.external_positions.push_back(e);
-  }
+  add_fixes_as_external_positions(log, scenario.gnss.lever_arm_m);
   for (const GnssVelocity& v : log.velocities) {
     if ((v.header.valid & GnssVelocity::kValidVelocity) == 0) continue;
     // Isotropic in ECEF: the receiver's NED covariance's largest variance on every axis.
@@ -202,16 +208,7 @@ TEST(CalibrationProblem, AVehicleFrameVelocityAidFindsTheMounting) {
   CalibrationLog& log = s.log;
   log.setup.land_vehicle = false;
   log.speeds.clear();
-  for (const GnssPosition& p : log.positions) {
-    if ((p.header.valid & GnssPosition::kValidPosition) == 0 || p.fix == GnssFixType::kNone) continue;
-    ExternalPosition e;
-    e.header = p.header;
-    e.header.valid = ExternalPosition::kValidX | ExternalPosition::kValidY | ExternalPosition::kValidZ;
-    e.value = Eigen::Vector3d(p.lat_rad, p.lon_rad, p.height_m);
-    e.std_m = p.cov_ned_m2.diagonal().cwiseSqrt();
-    e.lever_arm_m = scenario.gnss.lever_arm_m;
-    log.external_positions.push_back(e);
-  }
+  add_fixes_as_external_positions(log, scenario.gnss.lever_arm_m);
   std::mt19937_64 rng(16);
   std::normal_distribution<double> noise(0.0, 0.05);
   for (std::size_t i = 0; i < log.trajectory.size(); i += 20) {  // the truth (configured offset zero)
