@@ -28,12 +28,13 @@ namespace {
 
 // The mean of one kind of bias over the segments and each segment's value, with std devs:
 // var(mean) = sum_kl C_kl / N^2.
-bool fill(ceres::Covariance* covariance, std::size_t n, const double* (*block)(const BiasSegments&, std::size_t),
-          const BiasSegments& biases, double std_scale, Estimate3& mean, std::vector<Estimate3>& per_segment) {
+bool fill(ceres::Covariance* covariance, const std::vector<const double*>& blocks, double std_scale, Estimate3& mean,
+          std::vector<Estimate3>& per_segment) {
+  const std::size_t n = blocks.size();
   per_segment.assign(n, {});
   mean = {};
   for (std::size_t k = 0; k < n; ++k) {
-    per_segment[k].value = Eigen::Map<const Eigen::Vector3d>(block(biases, k));
+    per_segment[k].value = Eigen::Map<const Eigen::Vector3d>(blocks[k]);
     mean.value += per_segment[k].value / static_cast<double>(n);
   }
   if (covariance == nullptr) return false;
@@ -41,7 +42,7 @@ bool fill(ceres::Covariance* covariance, std::size_t n, const double* (*block)(c
   Eigen::Matrix<double, 3, 3, Eigen::RowMajor> c;
   for (std::size_t k = 0; k < n; ++k) {
     for (std::size_t l = k; l < n; ++l) {
-      if (!covariance->GetCovarianceBlock(block(biases, k), block(biases, l), c.data())) return false;
+      if (!covariance->GetCovarianceBlock(blocks[k], blocks[l], c.data())) return false;
       if (k == l) {
         per_segment[k].std = std_scale * c.diagonal().cwiseMax(0.0).cwiseSqrt();
         sum += c;
@@ -54,16 +55,18 @@ bool fill(ceres::Covariance* covariance, std::size_t n, const double* (*block)(c
   return true;
 }
 
-const double* gyro_block(const BiasSegments& b, std::size_t k) { return b.gyro(k); }
-const double* accel_block(const BiasSegments& b, std::size_t k) { return b.accel(k); }
-
 }  // namespace
 
 bool bias_estimates(ceres::Covariance* covariance, const BiasSegments& biases, double std_scale, CalibrationResult& result) {
   const std::size_t n = biases.count();
+  std::vector<const double*> gyro_blocks(n), accel_blocks(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    gyro_blocks[k] = biases.gyro(k);
+    accel_blocks[k] = biases.accel(k);
+  }
   std::vector<Estimate3> gyro, accel;
-  const bool gyro_ok = fill(covariance, n, gyro_block, biases, std_scale, result.gyro_bias_rps, gyro);
-  const bool accel_ok = fill(covariance, n, accel_block, biases, std_scale, result.accel_bias_mps2, accel);
+  const bool gyro_ok = fill(covariance, gyro_blocks, std_scale, result.gyro_bias_rps, gyro);
+  const bool accel_ok = fill(covariance, accel_blocks, std_scale, result.accel_bias_mps2, accel);
   result.bias_segments.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     result.bias_segments[k] = {.start_ns = biases.start_ns(k), .gyro_bias_rps = gyro[k], .accel_bias_mps2 = accel[k]};

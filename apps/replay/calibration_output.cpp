@@ -15,6 +15,11 @@ namespace {
 constexpr double kMps2PerMg = 9.80665e-3;  // standard gravity / 1000
 constexpr double kDegHPerRps = rot::kRadToDeg * 3600.0;
 
+// A bias segment's start from the first segment's (the log's first epoch).
+double segment_start_s(const calib::CalibrationResult& r, const calib::CalibrationResult::BiasSegment& b) {
+  return static_cast<double>(b.start_ns - r.bias_segments.front().start_ns) * 1e-9;
+}
+
 double rounded(double v, double step) { return std::round(v / step) * step; }
 
 // An estimate is written into the configuration only when the log observed it: its std dev at
@@ -166,8 +171,7 @@ std::string calibration_yaml(const config::Config& base, const calib::Calibratio
   s << "# IMU biases and scale factors are this log's, sensor frame, for reference (no config key); the\n"
        "# biases are the mean over " << r.bias_segments.size() << " segment(s) of the log (bias_segments.hpp); each:\n";
   for (const calib::CalibrationResult::BiasSegment& b : r.bias_segments) {
-    const double t_s = static_cast<double>(b.start_ns - r.bias_segments.front().start_ns) * 1e-9;
-    s << "#   from " << number(t_s, 1) << " s: gyro";
+    s << "#   from " << number(segment_start_s(r, b), 1) << " s: gyro";
     for (int i = 0; i < 3; ++i) s << " " << number(b.gyro_bias_rps.value[i] * kDegHPerRps, 2);
     s << " deg/h, accel";
     for (int i = 0; i < 3; ++i) s << " " << number(b.accel_bias_mps2.value[i] / kMps2PerMg, 3);
@@ -199,7 +203,7 @@ nlohmann::ordered_json calibration_json(const calib::CalibrationResult& r) {
   for (const Row& row : rows(r)) j["parameters"][row.name] = {{"estimate", row.value}, {"std", row.std}, {"unit", row.unit}};
   for (const calib::CalibrationResult::BiasSegment& b : r.bias_segments) {
     nlohmann::ordered_json seg;
-    seg["start_s"] = static_cast<double>(b.start_ns - r.bias_segments.front().start_ns) * 1e-9;
+    seg["start_s"] = segment_start_s(r, b);
     for (int i = 0; i < 3; ++i) {
       seg["gyro_bias_deg_h"].push_back(b.gyro_bias_rps.value[i] * kDegHPerRps);
       seg["gyro_bias_std_deg_h"].push_back(b.gyro_bias_rps.std[i] * kDegHPerRps);
