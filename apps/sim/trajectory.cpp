@@ -21,6 +21,7 @@ constexpr double kTwoPi = 2.0 * rot::kPi;
 // acceleration are continuous at segment boundaries.
 double smooth_step(double tau) { return tau - std::sin(kTwoPi * tau) / kTwoPi; }
 double smooth_step_rate(double tau) { return 1.0 - std::cos(kTwoPi * tau); }
+double smooth_step_accel(double tau) { return kTwoPi * std::sin(kTwoPi * tau); }
 
 // Unit vector of body x in NED for pitch theta and yaw psi (roll does not move it), and its
 // partial derivatives: v_n = u * dir (non-holonomic vehicle).
@@ -43,6 +44,17 @@ Eigen::Vector3d omega_nb_b(const Eigen::Vector3d& rpy, const Eigen::Vector3d& rp
   return {rpy_rate.x() - rpy_rate.z() * sp,
           rpy_rate.y() * cr + rpy_rate.z() * sr * cp,
           -rpy_rate.y() * sr + rpy_rate.z() * cr * cp};
+}
+
+// Time derivative of omega_nb_b above, by the chain rule over (rpy, rpy_rate).
+Eigen::Vector3d omega_nb_b_rate(const Eigen::Vector3d& rpy, const Eigen::Vector3d& rate,
+                                const Eigen::Vector3d& accel) {
+  const double sr = std::sin(rpy.x()), cr = std::cos(rpy.x());
+  const double sp = std::sin(rpy.y()), cp = std::cos(rpy.y());
+  const double dr = rate.x(), dp = rate.y(), dy = rate.z();
+  return {accel.x() - accel.z() * sp - dy * dp * cp,
+          accel.y() * cr - dp * dr * sr + accel.z() * sr * cp + dy * (dr * cr * cp - dp * sr * sp),
+          -accel.y() * sr - dp * dr * cr + accel.z() * cr * cp - dy * (dr * sr * cp + dp * cr * sp)};
 }
 
 // Curvilinear position rates (Groves §5.4): lat, lon, height.
@@ -138,24 +150,35 @@ Kinematics Trajectory::kinematics(double t_s) const {
     const double tau = (t_s - a.t0_s) / duration;
     const double s = smooth_step(tau);
     const double s_rate = smooth_step_rate(tau) / duration;
+    const double s_accel = smooth_step_accel(tau) / (duration * duration);
     k.speed_mps = a.speed_mps + (b.speed_mps - a.speed_mps) * s;
     k.speed_rate_mps2 = (b.speed_mps - a.speed_mps) * s_rate;
     k.rpy_rad = a.rpy_rad + (b.rpy_rad - a.rpy_rad) * s;
     k.rpy_rate_rps = (b.rpy_rad - a.rpy_rad) * s_rate;
+    k.rpy_accel_rps2 = (b.rpy_rad - a.rpy_rad) * s_accel;
   }
   k.stationary = k.speed_mps == 0.0 && k.speed_rate_mps2 == 0.0 && k.rpy_rate_rps.isZero(0.0);
   return k;
 }
 
-Eigen::Vector3d Trajectory::velocity_ned(const Kinematics& k) {
-  return k.speed_mps * direction(k.rpy_rad.y(), k.rpy_rad.z());
+Eigen::Vector3d Trajectory::velocity_ned(const Kinematics& k) const {
+  const Eigen::Vector3d v_p = k.speed_mps * direction(k.rpy_rad.y(), k.rpy_rad.z());
+  const Eigen::Vector3d& l = spec_.nonslip_point_m;
+  if (l.isZero(0.0)) return v_p;
+  const Eigen::Vector3d w = omega_nb_b(k.rpy_rad, k.rpy_rate_rps);
+  return v_p - rot::quat_from_rpy(k.rpy_rad) * w.cross(l);
 }
 
-Eigen::Vector3d Trajectory::acceleration_ned(const Kinematics& k) {
+Eigen::Vector3d Trajectory::acceleration_ned(const Kinematics& k) const {
   const double theta = k.rpy_rad.y(), psi = k.rpy_rad.z();
-  return k.speed_rate_mps2 * direction(theta, psi) +
-         k.speed_mps * (direction_d_theta(theta, psi) * k.rpy_rate_rps.y() +
-                        direction_d_psi(theta, psi) * k.rpy_rate_rps.z());
+  const Eigen::Vector3d a_p = k.speed_rate_mps2 * direction(theta, psi) +
+                              k.speed_mps * (direction_d_theta(theta, psi) * k.rpy_rate_rps.y() +
+                                             direction_d_psi(theta, psi) * k.rpy_rate_rps.z());
+  const Eigen::Vector3d& l = spec_.nonslip_point_m;
+  if (l.isZero(0.0)) return a_p;
+  const Eigen::Vector3d w = omega_nb_b(k.rpy_rad, k.rpy_rate_rps);
+  const Eigen::Vector3d w_dot = omega_nb_b_rate(k.rpy_rad, k.rpy_rate_rps, k.rpy_accel_rps2);
+  return a_p - rot::quat_from_rpy(k.rpy_rad) * (w.cross(w.cross(l)) + w_dot.cross(l));
 }
 
 double Trajectory::seconds_since_start(std::int64_t time_ns) const {

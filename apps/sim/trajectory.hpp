@@ -2,11 +2,19 @@
 // quantities (angular rate and specific force) a perfect IMU at the vehicle reference point would
 // measure along it.
 //
-// Kinematic model. The vehicle is non-holonomic: its velocity at the reference point lies along
-// the body x axis, v_b = [u, 0, 0], so v_n = u * [cos(theta) cos(psi), cos(theta) sin(psi),
-// -sin(theta)] and pitch is the climb (flight-path) angle. Speed u, yaw psi, pitch theta and roll
-// phi are smooth functions of time (see MotionSegment); position follows from integrating v_n on
-// the WGS-84 ellipsoid (curvilinear position rates, Groves §5.4) with classical RK4.
+// Kinematic model. The vehicle is non-holonomic: the velocity of its non-slip point P (a car's
+// rear-axle centre) lies along the body x axis, v_P,b = [u, 0, 0], so v_P,n = u * [cos(theta)
+// cos(psi), cos(theta) sin(psi), -sin(theta)] and pitch is the climb (flight-path) angle. The
+// reference point (where the IMU is, and what the truth describes) sits at -l from P, l =
+// TrajectorySpec::nonslip_point_m, and moves as a rigid body with it:
+//   v_n   = v_P,n - C_nb (omega_nb_b x l)
+//   dv_n/dt = dv_P,n/dt - C_nb (omega_nb_b x (omega_nb_b x l) + d(omega_nb_b)/dt x l)
+// (Groves §2.5.5's lever-arm velocity, differentiated; C_nb' = C_nb [omega_nb_b x]). The rotation
+// taken is omega_nb (relative to the local-level frame) rather than omega_eb: the two differ by the
+// transport rate (~3e-6 rad/s at 20 m/s), so P slips by ~4e-6 m/s per metre of l, far below any
+// odometry noise. With l = 0 (the default) P is the reference point. Speed u, yaw psi, pitch theta
+// and roll phi are smooth functions of time (see MotionSegment); position follows from integrating
+// v_n on the WGS-84 ellipsoid (curvilinear position rates, Groves §5.4) with classical RK4.
 //
 // Inertial quantities (the local-navigation-frame equations of Groves 2nd ed. §5.4, inverted):
 //   omega_ib_b = omega_nb_b + C_bn (omega_ie_n + omega_en_n)            (attitude update)
@@ -65,6 +73,9 @@ struct TrajectorySpec {
   double initial_pitch_rad = 0.0;   // the initial speed is zero, so any pitch is allowed
   double initial_roll_rad = 0.0;
   std::vector<MotionSegment> segments;
+  // The non-slip point P from the reference point, vehicle frame (FRD), metres: a car whose IMU is
+  // 1.2 m ahead of its rear axle has (-1.2, 0, z). Zero: the reference point itself does not slip.
+  Eigen::Vector3d nonslip_point_m = Eigen::Vector3d::Zero();
 };
 
 // Truth at one instant. The IMU rates are those of a perfect IMU at the vehicle reference point,
@@ -80,7 +91,7 @@ struct TruthSample {
   Eigen::Vector3d omega_ib_b_rps = Eigen::Vector3d::Zero();  // angular rate w.r.t. inertial space
   Eigen::Vector3d f_ib_b_mps2 = Eigen::Vector3d::Zero();     // specific force
   Eigen::Vector3d accel_ned_mps2 = Eigen::Vector3d::Zero();  // dv_n/dt
-  double speed_mps = 0.0;                                    // along body x (signed)
+  double speed_mps = 0.0;  // of the non-slip point, along body x (signed)
   Eigen::Vector3d gyro_bias_vehicle_rps = Eigen::Vector3d::Zero();
   Eigen::Vector3d accel_bias_vehicle_mps2 = Eigen::Vector3d::Zero();
   bool stationary = false;      // exactly zero velocity and angular rate w.r.t. the earth
@@ -93,6 +104,7 @@ struct Kinematics {
   double speed_mps = 0.0, speed_rate_mps2 = 0.0;
   Eigen::Vector3d rpy_rad = Eigen::Vector3d::Zero();       // yaw not wrapped (continuous)
   Eigen::Vector3d rpy_rate_rps = Eigen::Vector3d::Zero();  // Euler-angle rates
+  Eigen::Vector3d rpy_accel_rps2 = Eigen::Vector3d::Zero();  // their time derivatives
   bool stationary = false;
 };
 
@@ -108,9 +120,10 @@ class Trajectory {
 
   // Analytic profile at t seconds from the start (clamped to [0, duration]).
   Kinematics kinematics(double t_s) const;
-  // Velocity of the reference point in NED (exactly along body x) and its time derivative.
-  static Eigen::Vector3d velocity_ned(const Kinematics& k);
-  static Eigen::Vector3d acceleration_ned(const Kinematics& k);
+  // Velocity of the reference point in NED (along body x at the non-slip point) and its time
+  // derivative.
+  Eigen::Vector3d velocity_ned(const Kinematics& k) const;
+  Eigen::Vector3d acceleration_ned(const Kinematics& k) const;
 
   // Truth at the start (time_ns = start_time_ns()).
   TruthSample initial() const;

@@ -1,5 +1,6 @@
 #include "apps/simcmd/sim_command.hpp"
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -60,7 +61,8 @@ class TruthSink {
   std::uint64_t rows_ = 0;
 };
 
-// --imu-time-offset, --imu-mounting over the scenario's IMU; --no-gnss-velocity over its receiver.
+// --imu-time-offset, --imu-mounting over the scenario's IMU; --no-gnss-velocity over its receiver;
+// --nonslip-point over its vehicle.
 void apply_installation(const SimOptions& options, sim::Scenario& scenario) {
   if (!options.gnss_velocity) scenario.gnss.velocity = false;
   if (options.imu_time_offset_s) scenario.imu.time_offset_s = *options.imu_time_offset_s;
@@ -68,6 +70,13 @@ void apply_installation(const SimOptions& options, sim::Scenario& scenario) {
     const std::vector<double>& rpy = *options.imu_mounting_rpy_deg;
     if (rpy.size() != 3) throw CommandError("--imu-mounting takes roll,pitch,yaw (3 values in degrees)");
     scenario.imu.mounting_rpy_deg = {rpy[0], rpy[1], rpy[2]};
+  }
+  if (options.nonslip_point_m) {
+    const std::vector<double>& p = *options.nonslip_point_m;
+    if (p.size() != 3 || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+      throw CommandError("--nonslip-point takes x,y,z (3 finite values in metres)");
+    }
+    scenario.trajectory.nonslip_point_m = {p[0], p[1], p[2]};
   }
 }
 
@@ -196,6 +205,7 @@ void add_sim_command(CLI::App& root, int& exit_code) {
     double device_rate_hz = -1.0;
     double imu_time_offset_s = 0.0;
     std::vector<double> imu_mounting_rpy_deg;
+    std::vector<double> nonslip_point_m;
     bool quiet = false;
   };
   auto args = std::make_shared<Args>();
@@ -223,6 +233,11 @@ void add_sim_command(CLI::App& root, int& exit_code) {
                   "IMU mounting sensor -> vehicle roll,pitch,yaw in deg (default: the scenario's)")
       ->delimiter(',')
       ->expected(3);
+  CLI::Option* nonslip = sub->add_option("--nonslip-point", args->nonslip_point_m,
+                  "Point of the vehicle that does not slip sideways (a car's rear-axle centre), "
+                  "x,y,z in m from the IMU, vehicle frame (default: the IMU)")
+      ->delimiter(',')
+      ->expected(3);
   sub->add_flag("!--no-gnss-velocity", o.gnss_velocity,
                 "The receiver reports positions only (as an RTKLIB .pos without velocity columns)");
   add_quiet_flag(sub, args->quiet, "report of what was written");
@@ -230,13 +245,14 @@ void add_sim_command(CLI::App& root, int& exit_code) {
                       "navfuse sim --scenario drive_short --format mip --out drive.mip --truth truth.csv"},
                      {"a drive with GNSS outages as VN-300 binary, the wheel speeds in a FusionEngine log",
                       "navfuse sim --scenario drive_outage --format vn --out drive.vnb --wheel-out wheel.p1log"}});
-  sub->callback([args, seed, time_offset, mounting, &exit_code] {
+  sub->callback([args, seed, time_offset, mounting, nonslip, &exit_code] {
     if (seed->count() > 0) args->options.seed = args->seed;
     if (args->device_rate_hz >= 0.0) args->options.device_rate_hz = args->device_rate_hz;
     const InterruptSignals signals;
     args->options.interrupt = &InterruptSignals::received();
     if (time_offset->count() > 0) args->options.imu_time_offset_s = args->imu_time_offset_s;
     if (mounting->count() > 0) args->options.imu_mounting_rpy_deg = args->imu_mounting_rpy_deg;
+    if (nonslip->count() > 0) args->options.nonslip_point_m = args->nonslip_point_m;
     const SimReport report = run_sim(args->options);
     if (!args->quiet || report.interrupted_by != 0) print_report(args->options, report, std::cout);
     exit_code = report.interrupted_by != 0 ? interrupted_exit_code(report.interrupted_by) : 0;

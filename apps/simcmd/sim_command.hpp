@@ -36,6 +36,9 @@ struct SimOptions {
   // true time) and mounting sensor -> vehicle roll, pitch, yaw in degrees.
   std::optional<double> imu_time_offset_s;
   std::optional<std::vector<double>> imu_mounting_rpy_deg;
+  // Where the vehicle does not slip (the rear-axle centre of a car), vehicle frame from the IMU,
+  // metres; default: the scenario's (the IMU itself).
+  std::optional<std::vector<double>> nonslip_point_m;
   // false: the receiver reports positions only, as an RTKLIB .pos without velocity columns.
   bool gnss_velocity = true;
 };

@@ -2,6 +2,9 @@
 // refuses bad input with a one-line message naming the problem and leaves no output behind.
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -66,6 +69,30 @@ TEST(SimCommand, WheelOutGoesToAFusionEngineLog) {
   EXPECT_EQ(vn.kinds.count("vehicle_speed"), 0u);
   EXPECT_NEAR(static_cast<double>(wheel.kinds.at("vehicle_speed")), 60.0 * 50.0, 1.0);
   EXPECT_EQ(wheel.kinds.size(), 1u);
+}
+
+TEST(SimCommand, NonSlipPointMovesTheTruthOnlyWhenTheVehicleTurns) {
+  // The IMU's truth changes with where the vehicle does not slip only through rotation
+  // (v = v_P - C_nb (omega x l), apps/sim/trajectory.hpp): standing still it is the same truth.
+  const auto dir = scratch_dir();
+  auto truth_of = [&](const std::string& scenario, const std::string& name, std::vector<std::string> extra) {
+    std::vector<std::string> args{"sim", "--scenario", scenario, "--format", "vn", "--out", (dir / (name + ".vnb")).string(),
+                                  "--truth", (dir / (name + ".csv")).string(), "--quiet"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = run_cli(args);
+    EXPECT_EQ(r.exit_code, 0) << r.error;
+    std::ifstream in(dir / (name + ".csv"));
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(truth_of("static_start", "s0", {}), truth_of("static_start", "s1", {"--nonslip-point=-1.2,0,0.3"}));
+  EXPECT_NE(truth_of("drive_short", "d0", {}), truth_of("drive_short", "d1", {"--nonslip-point=-1.2,0,0.3"}));
+
+  for (const std::string bad : {"--nonslip-point=1,2", "--nonslip-point=nan,0,0"}) {
+    const auto r = run_cli({"sim", "--scenario", "static_start", "--format", "vn", "--out", (dir / "bad.vnb").string(), bad});
+    EXPECT_NE(r.exit_code, 0) << bad;
+    EXPECT_NE(r.error.find("nonslip-point"), std::string::npos) << r.error;
+    EXPECT_FALSE(std::filesystem::exists(dir / "bad.vnb"));
+  }
 }
 
 TEST(SimCommand, UnknownScenarioNamesIt) {

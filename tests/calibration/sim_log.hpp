@@ -39,7 +39,7 @@ inline SimLog sim_log(const sim::Scenario& scenario, const StartingSetup& start)
   s.imu_time_offset_s = start.imu_time_offset_s;
   s.wheel_lever_arm_m = scenario.wheel.lever_arm_m;
   if (scenario.gnss.heading) s.heading_baseline_v_m = scenario.gnss.secondary_lever_arm_m - scenario.gnss.lever_arm_m;
-  s.nhc_lever_arm_m = Eigen::Vector3d::Zero();  // the simulated vehicle does not slip at its reference point
+  s.nhc_lever_arm_m = scenario.trajectory.nonslip_point_m;  // where the simulated vehicle does not slip
   s.land_vehicle = true;
   s.gyro_arw_rad_rts = 0.1 * rot::kDegToRad / 60.0;
   s.accel_vrw_mps_rts = 0.03 / 60.0;

@@ -38,9 +38,9 @@ inline FilterOptions options_for(const sim::Scenario& s) {
   o.gnss_secondary_lever_arm_m = s.gnss.secondary_lever_arm_m;
   o.wheel_lever_arm_m = s.wheel.lever_arm_m;
   o.wheel_speed_std_mps = s.wheel.noise_std_mps;
-  // The simulated vehicle's velocity is along body x at its reference point (the IMU), so that is
-  // where it does not slip sideways (a real car: the rear-axle centre).
-  o.nhc_lever_arm_m = Eigen::Vector3d::Zero();
+  // Where the simulated vehicle does not slip sideways: its reference point (the IMU) unless the
+  // scenario moves it (a real car: the rear-axle centre).
+  o.nhc_lever_arm_m = s.trajectory.nonslip_point_m;
   return o;
 }
 
