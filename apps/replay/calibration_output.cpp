@@ -20,7 +20,13 @@ double segment_start_s(const calib::CalibrationResult& r, const calib::Calibrati
   return static_cast<double>(b.start_ns - r.bias_segments.front().start_ns) * 1e-9;
 }
 
-double rounded(double v, double step) { return std::round(v / step) * step; }
+// To a whole number of `decimals` places. Divided by the power of ten (exact in binary) rather than
+// multiplied by its inverse (not exact): the result is then the double nearest the decimal, which
+// the config writer prints as it reads (-0.12932, not -0.12932000000000002).
+double rounded(double v, int decimals) {
+  const double scale = std::pow(10.0, decimals);
+  return std::round(v * scale) / scale;
+}
 
 // An estimate is written into the configuration only when the log observed it: its std dev at
 // most these. Beyond them the fit held it near its prior and moved it by whatever the model lacks
@@ -122,7 +128,7 @@ config::Config calibrated_config(const config::Config& base, const calib::Calibr
   config::Config c = base;
   const Written w = written(r);
   for (std::size_t i = 0; i < 3; ++i) {
-    if (w.lever[i]) c.gnss.lever_arm_m[i] = rounded(r.gnss_lever_arm_m.value[static_cast<int>(i)], 1e-4);
+    if (w.lever[i]) c.gnss.lever_arm_m[i] = rounded(r.gnss_lever_arm_m.value[static_cast<int>(i)], 4);
   }
   if (w.mounting[0] || w.mounting[1]) {
     // The configured mounting turned by the observed residuals only (mounting_rotation.hpp).
@@ -130,9 +136,9 @@ config::Config calibrated_config(const config::Config& base, const calib::Calibr
                                 w.mounting[1] ? r.mounting_residual_rad.value.y() : 0.0};
     const Eigen::Vector3d rpy0(base.imu.mounting_rpy_deg[0], base.imu.mounting_rpy_deg[1], base.imu.mounting_rpy_deg[2]);
     const Eigen::Vector3d rpy = rot::rpy_from_dcm(calib::mounting_dcm(residual, rot::dcm_from_rpy(rpy0 * rot::kDegToRad)));
-    for (int i = 0; i < 3; ++i) c.imu.mounting_rpy_deg[static_cast<std::size_t>(i)] = rounded(rpy[i] * rot::kRadToDeg, 1e-4);
+    for (int i = 0; i < 3; ++i) c.imu.mounting_rpy_deg[static_cast<std::size_t>(i)] = rounded(rpy[i] * rot::kRadToDeg, 4);
   }
-  if (w.time_offset) c.imu.time_offset_s = rounded(r.imu_time_offset_s.value, 1e-5);
+  if (w.time_offset) c.imu.time_offset_s = rounded(r.imu_time_offset_s.value, 5);
   return c;
 }
 

@@ -99,6 +99,13 @@ TEST(CalibrationScenario, SmoothRecoversTheSimulatedInstallation) {
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_NE(text.str().find("#   imu.time_offset_s: "), std::string::npos);  // std devs in comments
+  // Written as rounded, to the 10 us it is rounded to: "time_offset_s: 0.04991", not the binary
+  // neighbour's 0.049910000000000003.
+  const std::string key = "\n  time_offset_s: ";
+  const std::size_t at = text.str().find(key);
+  ASSERT_NE(at, std::string::npos);
+  const std::string value = text.str().substr(at + key.size(), text.str().find_first_of(" \n", at + key.size()) - at - key.size());
+  EXPECT_LE(value.size(), 8u) << value;
 }
 
 // Issue 16's held-out check, on the drive built from issue 14's description of it (sim
