@@ -339,7 +339,7 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
     if (setup.land_vehicle && v.norm() > setup.nhc_min_speed_mps) {
       problem.AddResidualBlock(new ceres::AutoDiffCostFunction<NhcFactor, 2, 3, 4, 2>(new NhcFactor(
                                    setup.nhc_lateral_std_mps, setup.nhc_vertical_std_mps, c_vs0, e.knowns.rate_s_rps,
-                                   setup.nhc_lever_arm_m)),
+                                   setup.nhc_lever_arm_m, setup.nhc_lever_arm_std_m)),
                                new ceres::HuberLoss(options.huber_sigmas), e.v.data(), e.q.data(), g.mount);
       ++result.nhc_residuals;
     }

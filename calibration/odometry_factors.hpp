@@ -8,6 +8,8 @@
 // Blocks: wheel: v, q, mounting residual [pitch, yaw], k, dt_imu; NHC: v, q, mounting residual.
 #pragma once
 
+#include <cmath>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -48,12 +50,20 @@ class WheelSpeedFactor {
   Eigen::Vector3d rate_, lever_;
 };
 
+// The point known to lever_std_v_m per axis adds the variance of its lever-arm term w x d as the
+// filter's constraint does (filter/measurements/nonholonomic.hpp), here on the diagonal only: the
+// y-z covariance, -w_y w_z sigma_x^2, is a pitch rate times a yaw rate. w is the IMU's rate turned
+// by the configured mounting (the earth rate's 7e-5 rad/s left in).
 class NhcFactor {
  public:
   NhcFactor(double lateral_std_mps, double vertical_std_mps, const Eigen::Matrix3d& c_vs0,
-            const Eigen::Vector3d& rate_s_rps, const Eigen::Vector3d& lever_v_m)
-      : inv_lat_(1.0 / lateral_std_mps), inv_vert_(1.0 / vertical_std_mps), c_vs0_(c_vs0), rate_(rate_s_rps),
-        lever_(lever_v_m) {}
+            const Eigen::Vector3d& rate_s_rps, const Eigen::Vector3d& lever_v_m, const Eigen::Vector3d& lever_std_v_m)
+      : c_vs0_(c_vs0), rate_(rate_s_rps), lever_(lever_v_m) {
+    const Eigen::Vector3d w = c_vs0 * rate_s_rps;
+    const Eigen::Vector3d s2 = lever_std_v_m.cwiseAbs2();
+    inv_lat_ = 1.0 / std::sqrt(lateral_std_mps * lateral_std_mps + w.z() * w.z() * s2.x() + w.x() * w.x() * s2.z());
+    inv_vert_ = 1.0 / std::sqrt(vertical_std_mps * vertical_std_mps + w.y() * w.y() * s2.x() + w.x() * w.x() * s2.y());
+  }
 
   template <typename T>
   bool operator()(const T* v, const T* q, const T* mount, T* out) const {

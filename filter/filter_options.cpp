@@ -85,6 +85,11 @@ FilterOptions options_from_config(const navfuse::config::Config& config) {
   o.max_latency_s = config.timing.max_latency_s;
   const auto& nhc = config.nhc;
   if (nhc.lever_arm_m) o.nhc_lever_arm_m = vec(*nhc.lever_arm_m);
+  if (nhc.lever_arm_std_m) {
+    o.nhc_lever_arm_std_m = vec(*nhc.lever_arm_std_m);
+  } else if (!nhc.lever_arm_m && vec(config.wheel.lever_arm_m).isZero(0.0)) {
+    o.nhc_lever_arm_std_m = kUnknownNonSlipPointStdM;
+  }
   o.nhc_lateral_std_mps = nhc.lateral_std_mps;
   o.nhc_vertical_std_mps = nhc.vertical_std_mps;
   o.nhc_min_speed_mps = nhc.min_speed_mps;

@@ -96,6 +96,12 @@ enum class GatedAid : std::uint8_t {
   kCount,
 };
 
+// Where a car does not slip when its config does not say (no nhc.lever_arm_m, no wheel lever arm):
+// the constraint then holds at the IMU, and this is how far off that guess may be, 1 sigma per
+// vehicle axis. An IMU on a car sits between the axles or over the rear one, 0-3 m ahead of the
+// rear-axle centre (x: 1.5 +- 1.5 m), near the centreline and up to a metre above the axle.
+inline const Eigen::Vector3d kUnknownNonSlipPointStdM{1.5, 0.5, 0.5};
+
 struct FilterOptions {
   ImuNoise imu;
   MagnetometerOptions magnetometer;
@@ -118,6 +124,9 @@ struct FilterOptions {
   // The point that does not slip sideways or leave the road (the rear-axle centre of a car);
   // nullopt: the wheel lever arm, which is where odometers usually measure.
   std::optional<Eigen::Vector3d> nhc_lever_arm_m;
+  // How well that point is known, 1 sigma per vehicle axis: its uncertainty enters the constraint's
+  // noise through the rotation (nonholonomic.hpp). Zero: known.
+  Eigen::Vector3d nhc_lever_arm_std_m = Eigen::Vector3d::Zero();
   double nhc_lateral_std_mps = 0.1;   // body y velocity at the wheel point
   double nhc_vertical_std_mps = 0.1;  // body z velocity at the wheel point
   double nhc_interval_s = 0.1;

@@ -26,6 +26,7 @@ CalibrationCollector::CalibrationCollector(const filter::FilterOptions& o) : opt
   s.wheel_lever_arm_m = o.wheel_lever_arm_m;
   s.heading_baseline_v_m = filter::heading_baseline_b(o.gnss_lever_arm_m, o.gnss_secondary_lever_arm_m);
   s.nhc_lever_arm_m = o.nhc_lever_arm_m.value_or(o.wheel_lever_arm_m);
+  s.nhc_lever_arm_std_m = o.nhc_lever_arm_std_m;
   s.land_vehicle = o.land_vehicle;
   s.nhc_lateral_std_mps = o.nhc_lateral_std_mps;
   s.nhc_vertical_std_mps = o.nhc_vertical_std_mps;

@@ -118,6 +118,9 @@ struct NhcConfig {
   std::optional<bool> enabled;
   // The point that does not slip sideways (a car's rear-axle centre); unset: wheel.lever_arm_m.
   std::optional<Vec3> lever_arm_m;
+  // How well that point is known, 1 sigma per vehicle axis (m). Unset: 0 when lever_arm_m or a
+  // non-zero wheel.lever_arm_m gives it, else kUnknownNonSlipPointStdM (the IMU is only a guess).
+  std::optional<Vec3> lever_arm_std_m;
   double lateral_std_mps = 0.1;
   double vertical_std_mps = 0.1;
   double min_speed_mps = 1.0;  // below it stops are left to zero-velocity updates

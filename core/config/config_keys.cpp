@@ -19,6 +19,8 @@ constexpr ValueRange kAngleDeg{-360.0, 360.0};
 // Lever arms: no vehicle or vessel an IMU is fitted to puts an antenna or wheel 100 m away;
 // beyond it the value is in the wrong unit (mm for m) or garbage.
 constexpr ValueRange kLeverArmM{-100.0, 100.0};
+// How well a point of the vehicle is known: 0 (measured exactly) to 10 m (anywhere on it).
+constexpr ValueRange kPointStdM{0.0, 10.0};
 // Turn-on bias priors: 1e5 deg/h (28 deg/s) is beyond the bias of any gyro a navigation filter can
 // use (consumer MEMS: a few deg/s) and 100 m/s^2 (10 g) beyond any accelerometer bias; larger
 // priors only overflow the covariance (1e300 squared is inf, then NaN everywhere).
@@ -175,6 +177,9 @@ const KeyBinding kKeys[] = {
     NAVFUSE_CONFIG_KEY(nhc.lever_arm_m, kLeverArmM,
                        "the point that does not slip sideways (a car's rear-axle centre), vehicle frame "
                        "FRD (m; ~: wheel.lever_arm_m)"),
+    NAVFUSE_CONFIG_KEY(nhc.lever_arm_std_m, kPointStdM,
+                       "how well that point is known, 1 sigma per axis (m; ~: 0 when nhc.lever_arm_m or a "
+                       "non-zero wheel.lever_arm_m gives it, else 1.5, 0.5, 0.5: a guess at the IMU)"),
     NAVFUSE_CONFIG_KEY(nhc.lateral_std_mps, kSpeedMps, "sideways velocity at the constraint point, 1 sigma (m/s)"),
     NAVFUSE_CONFIG_KEY(nhc.vertical_std_mps, kSpeedMps, "vertical velocity at the constraint point, 1 sigma (m/s)"),
     NAVFUSE_CONFIG_KEY(nhc.min_speed_mps, kSpeedThresholdMps, "applied only above this speed (m/s)"),

@@ -83,7 +83,8 @@ void apply_nonholonomic(FilterCore& c, const FilterOptions& o) {
   if (c.x.vel_ned_mps.norm() < o.nhc_min_speed_mps) return;
   c.odometry.last_nhc_ns = c.x.time_ns;
   const Observation obs = nonholonomic_observation(c.view(0.0), o.nhc_lever_arm_m.value_or(o.wheel_lever_arm_m),
-                                                   o.nhc_lateral_std_mps, o.nhc_vertical_std_mps);
+                                                   o.nhc_lever_arm_std_m, o.nhc_lateral_std_mps,
+                                                   o.nhc_vertical_std_mps);
   if (c.apply(o, obs, o.gate_for(GatedAid::kNhc, obs.rows())).used) ++c.mode.nhc_updates;
 }
 

@@ -128,6 +128,23 @@ TEST(ConfigOptions, NhcPointIsItsOwnKeyOrTheWheel) {
                    .nhc.lever_arm_m);
 }
 
+TEST(ConfigOptions, AnUnknownNhcPointIsAGuessWithItsUncertainty) {
+  // Nothing says where the car does not slip: at the IMU, known only to kUnknownNonSlipPointStdM.
+  EXPECT_EQ(options_from_config(config::load_from_string("platform: land\n")).nhc_lever_arm_std_m,
+            Eigen::Vector3d(1.5, 0.5, 0.5));
+  // The odometer's point or the constraint's own key says where: known.
+  EXPECT_EQ(options_from_config(config::load_from_string("wheel: {lever_arm_m: [-1.2, 0, 0.3]}\n")).nhc_lever_arm_std_m,
+            Eigen::Vector3d::Zero());
+  EXPECT_EQ(options_from_config(config::load_from_string("nhc: {lever_arm_m: [0, 0, 0]}\n")).nhc_lever_arm_std_m,
+            Eigen::Vector3d::Zero());
+  // Given: as given, and it survives the dump.
+  const config::Config c = config::load_from_string("nhc: {lever_arm_std_m: [0.2, 0.1, 0.3]}\n");
+  EXPECT_EQ(options_from_config(c).nhc_lever_arm_std_m, Eigen::Vector3d(0.2, 0.1, 0.3));
+  EXPECT_EQ(options_from_config(config::load_from_string(config::to_yaml(c))).nhc_lever_arm_std_m,
+            Eigen::Vector3d(0.2, 0.1, 0.3));
+  EXPECT_THROW(config::load_from_string("nhc: {lever_arm_std_m: [-1, 0, 0]}\n"), config::ConfigError);
+}
+
 TEST(ConfigOptions, ExplicitSwitchesOverrideThePlatform) {
   // A land vehicle without NHC (e.g. a tracked vehicle that skids), course alignment kept.
   auto land = config::load_from_string("platform: land\nnhc: {enabled: false}\n");

@@ -266,7 +266,7 @@ std::vector<Model> models(const TestPoint& p) {
       {"wheel_ticks",
        [=](const StateView& s) { return wheel_tick_observation(s, TickSpeed{speed, 0.1}, wheel_lever, 1.5); },
        speed_terms},
-      {"nonholonomic", [=](const StateView& s) { return nonholonomic_observation(s, wheel_lever, 0.1, 0.1); },
+      {"nonholonomic", [=](const StateView& s) { return nonholonomic_observation(s, wheel_lever, Eigen::Vector3d::Zero(), 0.1, 0.1); },
        nhc_terms},
       {"zero_velocity", [](const StateView& s) { return zero_velocity_observation(s, 0.01); }, {}},
       {"gravity_vector",
