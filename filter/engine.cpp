@@ -126,13 +126,7 @@ void Engine::fuse_entry(Entry& e) {
 
 void Engine::count(MeasurementKind kind, const FuseResult& r) {
   KindStats& st = stats_.of(kind);
-  if (r.rows > 0) {
-    InnovationStats& in = st.innovation;
-    ++in.count;
-    in.nis_sum += r.nis;
-    in.nis_per_dim_sum += r.nis / r.rows;
-    if (!r.used && r.reason == RejectReason::kChi2Gate) ++in.above_gate;
-  }
+  if (r.rows > 0) st.innovation.add(r.nis, r.rows, !r.used && r.reason == RejectReason::kChi2Gate);
   if (r.used) {
     ++st.used;
   } else {
@@ -260,6 +254,7 @@ const FilterStats& Engine::stats() const {
   stats_view_.zupts = core_.mode.zupts;
   stats_view_.accel_tilt_updates = core_.tilt.updates;
   stats_view_.nhc_updates = core_.mode.nhc_updates;
+  stats_view_.nhc_innovation = core_.mode.nhc_innovation;
   stats_view_.covariance_inflations = core_.adaptation.inflations;
   stats_view_.output_jumps_blended = core_.output_blend.jumps_blended;
   stats_view_.process_noise_scale = core_.adaptation.process_noise_scale;

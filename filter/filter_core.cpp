@@ -75,6 +75,7 @@ void FilterCore::restart(const FilterOptions& o) {
   mode.gnss_recoveries = previous.gnss_recoveries;
   mode.zupts = previous.zupts;
   mode.nhc_updates = previous.nhc_updates;
+  mode.nhc_innovation = previous.nhc_innovation;
   update_mode(*this, o);
 }
 

@@ -165,6 +165,7 @@ struct ModeState {
   std::uint64_t gnss_recoveries = 0;
   std::uint64_t zupts = 0;
   std::uint64_t nhc_updates = 0;
+  InnovationStats nhc_innovation;  // of the constraint updates tried
 };
 
 struct FilterCore {

@@ -44,6 +44,13 @@ struct InnovationStats {
   double fraction_above_gate() const {
     return count ? static_cast<double>(above_gate) / static_cast<double>(count) : 0.0;
   }
+  // One update tried: its NIS over `rows` dimensions, and whether the gate refused it.
+  void add(double nis, int rows, bool gated) {
+    ++count;
+    nis_sum += nis;
+    nis_per_dim_sum += nis / rows;
+    if (gated) ++above_gate;
+  }
 };
 
 struct KindStats {
@@ -64,6 +71,9 @@ struct FilterStats {
   std::uint64_t zupts = 0;           // zero-velocity updates applied
   std::uint64_t accel_tilt_updates = 0;  // gravity-reference updates applied (control/tilt_control.hpp)
   std::uint64_t nhc_updates = 0;     // non-holonomic constraint updates applied
+  // The constraint's innovations (tried, accepted or gated): far above 1 per dimension says the
+  // constraint point is not where the vehicle does not slip (nhc.lever_arm_m).
+  InnovationStats nhc_innovation;
   std::uint64_t covariance_inflations = 0;  // over-confidence repaired (innovation_adaptation)
   std::uint64_t output_jumps_blended = 0;   // position corrections the output took gradually (output_blend)
   double process_noise_scale = 1.0;         // current adaptive multiplier on the random walks

@@ -7,6 +7,23 @@
 #include "apps/output/output_file.hpp"
 
 namespace navfuse::apps {
+namespace {
+
+nlohmann::ordered_json innovation_json(const InnovationSummary& in) {
+  return {{"count", in.count},
+          {"mean_nis", in.mean_nis},
+          {"mean_nis_per_dim", in.mean_nis_per_dim},
+          {"fraction_above_gate", in.fraction_above_gate}};
+}
+
+void print_innovation_line(std::ostream& os, std::string_view name, const InnovationSummary& in) {
+  os << "  " << std::left << std::setw(18) << name << std::right << " count " << std::setw(8) << in.count
+     << "  mean NIS/dim " << std::fixed << std::setprecision(2) << std::setw(7) << in.mean_nis_per_dim
+     << "  above gate " << std::setprecision(1) << std::setw(5) << 100.0 * in.fraction_above_gate << " %\n"
+     << std::defaultfloat;
+}
+
+}  // namespace
 
 nlohmann::ordered_json Summary::to_json(bool decode_only) const {
   nlohmann::ordered_json j;
@@ -30,12 +47,7 @@ nlohmann::ordered_json Summary::to_json(bool decode_only) const {
       e["used"] = ks.used;
       e["rejected"] = nlohmann::ordered_json::object();
       for (const auto& [reason, n] : ks.rejected) e["rejected"][reason] = n;
-      if (ks.innovation) {
-        e["innovation"] = {{"count", ks.innovation->count},
-                           {"mean_nis", ks.innovation->mean_nis},
-                           {"mean_nis_per_dim", ks.innovation->mean_nis_per_dim},
-                           {"fraction_above_gate", ks.innovation->fraction_above_gate}};
-      }
+      if (ks.innovation) e["innovation"] = innovation_json(*ks.innovation);
       e["pending_at_end"] = ks.pending;
     }
     m[std::string(to_string(static_cast<MeasurementKind>(k)))] = e;
@@ -61,6 +73,11 @@ nlohmann::ordered_json Summary::to_json(bool decode_only) const {
                    {"max_gnss_position_noise_scale", adaptation->max_gnss_position_noise_scale},
                    {"max_gnss_velocity_noise_scale", adaptation->max_gnss_velocity_noise_scale},
                    {"output_jumps_blended", adaptation->output_jumps_blended}};
+  }
+  if (nhc && !decode_only) {
+    nlohmann::ordered_json c = {{"updates", nhc_updates}};
+    c.update(innovation_json(*nhc));
+    j["constraints"]["nhc"] = c;
   }
   if (!calibration.empty() && !decode_only) {
     nlohmann::ordered_json c = nlohmann::ordered_json::object();
@@ -133,11 +150,12 @@ void Summary::print_innovations(std::ostream& os) const {
       os << "innovations (updates tried; a consistent filter has NIS per dimension ~1):\n";
       header = true;
     }
-    os << "  " << std::left << std::setw(18) << to_string(static_cast<MeasurementKind>(k)) << std::right
-       << " count " << std::setw(8) << in->count << "  mean NIS/dim " << std::fixed << std::setprecision(2)
-       << std::setw(7) << in->mean_nis_per_dim << "  above gate " << std::setprecision(1) << std::setw(5)
-       << 100.0 * in->fraction_above_gate << " %\n"
-       << std::defaultfloat;
+    print_innovation_line(os, to_string(static_cast<MeasurementKind>(k)), *in);
+  }
+  if (nhc && nhc->count > 0) {
+    if (!header) os << "innovations (updates tried; a consistent filter has NIS per dimension ~1):\n";
+    print_innovation_line(os, "nhc (constraint)", *nhc);
+    os << "    (its std is a tolerance: far below 1 where the vehicle does not slip at nhc.lever_arm_m)\n";
   }
   if (adaptation && (adaptation->covariance_inflations > 0 || adaptation->max_process_noise_scale > 1.0 ||
                      adaptation->gnss_recoveries > 0 || adaptation->max_gnss_position_noise_scale > 1.0 ||

@@ -5,7 +5,9 @@
 // run {wall_s, imu_samples_per_s, modes_reached}. Added beside them: measurements.KIND.innovation
 // {count, mean_nis, mean_nis_per_dim, fraction_above_gate}, measurements.KIND.pending_at_end,
 // filter {covariance_inflations, process_noise_scale, max_process_noise_scale, gnss_recoveries,
-//         max_gnss_position_noise_scale, max_gnss_velocity_noise_scale, output_jumps_blended}
+//         max_gnss_position_noise_scale, max_gnss_velocity_noise_scale, output_jumps_blended},
+// constraints.nhc {updates, count, mean_nis, mean_nis_per_dim, fraction_above_gate} (when the
+// non-holonomic constraint was tried)
 // and calibration {the CSV's calibration column names: value} at the end of the run.
 #pragma once
 
@@ -72,6 +74,9 @@ struct Summary {
   std::array<KindSummary, static_cast<std::size_t>(MeasurementKind::kCount)> kinds{};
   std::optional<RunStats> run;  // absent for `decode`
   std::optional<AdaptationSummary> adaptation;  // absent for `decode`
+  // The non-holonomic constraint's updates applied and innovations tried (absent when none were).
+  std::uint64_t nhc_updates = 0;
+  std::optional<InnovationSummary> nhc;
   // The estimated calibration states at the end of the run (the groups estimated; empty for
   // `decode` and before levelling).
   std::vector<CalibrationGroup> calibration;

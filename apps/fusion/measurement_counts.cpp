@@ -1,6 +1,13 @@
 #include "apps/fusion/measurement_counts.hpp"
 
 namespace navfuse::apps {
+namespace {
+
+InnovationSummary innovation_summary(const filter::InnovationStats& in) {
+  return {in.count, in.mean_nis(), in.mean_nis_per_dim(), in.fraction_above_gate()};
+}
+
+}  // namespace
 
 void MeasurementCounts::count_gated(MeasurementKind kind, std::string_view reason) {
   auto& reasons = gated[static_cast<std::size_t>(kind)];
@@ -24,9 +31,12 @@ void fill_measurement_counts(const filter::Engine& engine, const MeasurementCoun
     if (fs.ignored > 0) ks.rejected["ignored"] += fs.ignored;
     for (const auto& [reason, n] : counts.gated[k]) ks.rejected[reason] += n;
     if (fs.innovation.count > 0) {
-      ks.innovation = InnovationSummary{fs.innovation.count, fs.innovation.mean_nis(),
-                                        fs.innovation.mean_nis_per_dim(), fs.innovation.fraction_above_gate()};
+      ks.innovation = innovation_summary(fs.innovation);
     }
+  }
+  summary.nhc_updates = stats.nhc_updates;
+  if (stats.nhc_innovation.count > 0) {
+    summary.nhc = innovation_summary(stats.nhc_innovation);
   }
   summary.adaptation =
       AdaptationSummary{stats.covariance_inflations,          stats.process_noise_scale,

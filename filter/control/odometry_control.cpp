@@ -85,7 +85,9 @@ void apply_nonholonomic(FilterCore& c, const FilterOptions& o) {
   const Observation obs = nonholonomic_observation(c.view(0.0), o.nhc_lever_arm_m.value_or(o.wheel_lever_arm_m),
                                                    o.nhc_lever_arm_std_m, o.nhc_lateral_std_mps,
                                                    o.nhc_vertical_std_mps);
-  if (c.apply(o, obs, o.gate_for(GatedAid::kNhc, obs.rows())).used) ++c.mode.nhc_updates;
+  const FuseResult r = c.apply(o, obs, o.gate_for(GatedAid::kNhc, obs.rows()));
+  if (r.rows > 0) c.mode.nhc_innovation.add(r.nis, r.rows, !r.used && r.reason == RejectReason::kChi2Gate);
+  if (r.used) ++c.mode.nhc_updates;
 }
 
 }  // namespace navfuse::filter

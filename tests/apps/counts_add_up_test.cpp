@@ -58,6 +58,26 @@ TEST(CountsAddUp, EveryDemoLog) {
   for (const DemoLog& log : kLogs) EXPECT_GT(expect_counts_add_up(kDemo + log.file, kDemo + log.config), 1000u);
 }
 
+// The non-holonomic constraint (the demo configs are a land vehicle's): every update tried is
+// applied or gated, and the summary says how many of each.
+TEST(CountsAddUp, TheConstraintsUpdatesAreAppliedOrGated) {
+  for (const DemoLog& log : kLogs) {
+    SCOPED_TRACE(log.file);
+    ReplayOptions o;
+    o.inputs = {kDemo + log.file};
+    o.config_path = kDemo + log.config;
+    const nlohmann::ordered_json j = run_replay(o).summary.to_json(/*decode_only=*/false);
+    ASSERT_TRUE(j.contains("constraints")) << j.dump();
+    const auto& nhc = j["constraints"]["nhc"];
+    const auto tried = nhc["count"].get<std::uint64_t>();
+    const auto applied = nhc["updates"].get<std::uint64_t>();
+    EXPECT_GT(applied, 500u);  // 10 Hz over more than a minute of driving
+    const double gated = nhc["fraction_above_gate"].get<double>() * static_cast<double>(tried);
+    EXPECT_NEAR(static_cast<double>(applied) + gated, static_cast<double>(tried), 1e-6);
+    EXPECT_GT(nhc["mean_nis_per_dim"].get<double>(), 0.0);
+  }
+}
+
 TEST(CountsAddUp, LogWithoutImuKeepsItsAidingPending) {
   // GNSS and wheel speed only: nothing is fused; what the buffer could not hold is "overflow",
   // the rest is pending at the end, not lost from the counts.
