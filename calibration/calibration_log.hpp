@@ -48,7 +48,9 @@ struct CalibrationSetup {
   // heading_baseline_b): the vehicle's x axis for a device that reports its heading.
   Eigen::Vector3d heading_baseline_v_m = Eigen::Vector3d::UnitX();
   Eigen::Vector3d nhc_lever_arm_m = Eigen::Vector3d::Zero();
-  Eigen::Vector3d nhc_lever_arm_std_m = Eigen::Vector3d::Zero();  // how well that point is known
+  // How well that point is known (nhc.lever_arm_std_m); above 0 on an axis, the calibration
+  // estimates it there.
+  Eigen::Vector3d nhc_lever_arm_std_m = Eigen::Vector3d::Zero();
   bool land_vehicle = false;  // NHC applies
   double nhc_lateral_std_mps = 0.1;
   double nhc_vertical_std_mps = 0.1;

@@ -17,6 +17,7 @@
 #include "calibration/gnss_factors.hpp"
 #include "calibration/imu_preintegration.hpp"
 #include "calibration/local_frame.hpp"
+#include "calibration/mounting_rotation.hpp"
 #include "calibration/odometry_factors.hpp"
 #include "calibration/preintegration_factor.hpp"
 #include "calibration/vehicle_velocity_factor.hpp"
@@ -30,6 +31,7 @@ constexpr double kNsPerS = 1e9;
 // The calibration's own parameter blocks.
 struct Globals {
   double lever[3] = {0, 0, 0};
+  double nhc_lever[3] = {0, 0, 0};  // the point that does not slip (NhcFactor)
   double mount[2] = {0, 0};  // residual vehicle pitch, yaw about the configured mounting (mounting_dcm)
   double dt[1] = {0};
   double scale[1] = {1};
@@ -74,28 +76,6 @@ bool block_covariance(ceres::Covariance& cov, const double* block, int size, Eig
   return true;
 }
 
-// The config key's roll, pitch and yaw of the configured mounting turned by `residual`.
-Eigen::Vector3d mounting_rpy(const Eigen::Vector2d& residual, const Eigen::Matrix3d& c_vs0) {
-  return rot::rpy_from_dcm(mounting_dcm(residual.data(), c_vs0));
-}
-
-// Their std devs from the residual's 2 x 2 covariance, through the Jacobian of the Euler angles
-// (central differences; angles wrapped): for a sensor mounted x right, z up the vehicle pitch
-// residual is the Euler roll's, so all three may be non-zero.
-Eigen::Vector3d mounting_rpy_std(const Eigen::Vector2d& residual, const Eigen::Matrix2d& cov, const Eigen::Matrix3d& c_vs0) {
-  constexpr double kStep_rad = 1e-6;
-  Eigen::Matrix<double, 3, 2> j;
-  for (int i = 0; i < 2; ++i) {
-    const Eigen::Vector2d h = kStep_rad * Eigen::Vector2d::Unit(i);
-    const Eigen::Vector3d d = mounting_rpy(residual + h, c_vs0) - mounting_rpy(residual - h, c_vs0);
-    for (int a = 0; a < 3; ++a) j(a, i) = rot::wrap_pi(d[a]) / (2.0 * kStep_rad);
-  }
-  // An angle the residual does not move (the Euler roll of a sensor mounted in the vehicle axes)
-  // differs only by rounding: held, std 0.
-  const Eigen::Vector3d std = (j * cov * j.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
-  return std.unaryExpr([](double s) { return s < 1e-9 ? 0.0 : s; });
-}
-
 // One solve, linearised about `setup` and the mounting residual found so far (see calibrate()).
 CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& setup,
                              const Eigen::Vector2d& mount_residual_rad, const CalibrationOptions& options) {
@@ -120,6 +100,7 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
 
   Globals g;
   for (int i = 0; i < 3; ++i) g.lever[i] = setup.gnss_lever_arm_m[i];
+  for (int i = 0; i < 3; ++i) g.nhc_lever[i] = setup.nhc_lever_arm_m[i];
   BiasSegments biases(epochs.front().time_ns, epochs.back().time_ns, options.bias_segments, setup.gyro_bias_std_rps,
                       setup.accel_bias_std_mps2, plan.bg0, plan.ba0);
   g.mount[0] = mount_residual_rad.x();
@@ -337,12 +318,23 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
     }
     const Eigen::Vector3d v(e.v[0], e.v[1], e.v[2]);
     if (setup.land_vehicle && v.norm() > setup.nhc_min_speed_mps) {
-      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<NhcFactor, 2, 3, 4, 2>(new NhcFactor(
-                                   setup.nhc_lateral_std_mps, setup.nhc_vertical_std_mps, c_vs0, e.knowns.rate_s_rps,
-                                   setup.nhc_lever_arm_m, setup.nhc_lever_arm_std_m)),
-                               new ceres::HuberLoss(options.huber_sigmas), e.v.data(), e.q.data(), g.mount);
+      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<NhcFactor, 2, 3, 4, 2, 3>(new NhcFactor(
+                                   setup.nhc_lateral_std_mps, setup.nhc_vertical_std_mps, c_vs0, e.knowns.rate_s_rps)),
+                               new ceres::HuberLoss(options.huber_sigmas), e.v.data(), e.q.data(), g.mount,
+                               g.nhc_lever);
       ++result.nhc_residuals;
     }
+  }
+  // The non-slip point: held where the config gives it; where it only guesses it, estimated about
+  // the guess with the guess's std (an axis of std 0 held at 1 um).
+  result.nhc_lever_arm_m.value = setup.nhc_lever_arm_m;
+  result.nhc_lever_arm_estimated = result.nhc_residuals > 0 && !log.setup.nhc_lever_arm_std_m.isZero(0.0);
+  if (result.nhc_lever_arm_estimated) {
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<VectorPrior<3>, 3, 3>(new VectorPrior<3>(
+                                 log.setup.nhc_lever_arm_m, log.setup.nhc_lever_arm_std_m.cwiseMax(1e-6))),
+                             nullptr, g.nhc_lever);
+  } else if (result.nhc_residuals > 0) {
+    problem.SetParameterBlockConstant(g.nhc_lever);
   }
   result.mounting_estimated =
       result.speed_residuals + result.nhc_residuals + heading_residuals + vehicle_velocity_residuals > 0;
@@ -389,6 +381,7 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
   result.imu_variance_factor = 2.0 * imu_cost / (9.0 * static_cast<double>(imu_blocks.size()));
 
   result.gnss_lever_arm_m.value = Eigen::Vector3d(g.lever[0], g.lever[1], g.lever[2]);
+  result.nhc_lever_arm_m.value = Eigen::Vector3d(g.nhc_lever[0], g.nhc_lever[1], g.nhc_lever[2]);
   result.mounting_residual_rad.value = Eigen::Vector2d(g.mount[0], g.mount[1]);
   result.mounting_rpy_rad.value = mounting_rpy(result.mounting_residual_rad.value, c_vs0);
   result.imu_time_offset_s.value = g.dt[0];
@@ -401,6 +394,7 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
   std::vector<const double*> blocks = {g.lever, g.dt, g.sg, g.sa};
   if (result.mounting_estimated) blocks.push_back(g.mount);
   if (result.speed_residuals > 0) blocks.push_back(g.scale);
+  if (result.nhc_lever_arm_estimated) blocks.push_back(g.nhc_lever);
   std::vector<std::pair<const double*, const double*>> pairs;
   for (const double* b : blocks) pairs.emplace_back(b, b);
   add_bias_covariance_pairs(biases, pairs);
@@ -429,6 +423,13 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
       result.mounting_rpy_rad.std = mounting_rpy_std(result.mounting_residual_rad.value, c, c_vs0);
     }
     if (result.odometer_scale && block_stds(covariance, g.scale, 1, s)) result.odometer_scale->std = k * s[0];
+    if (result.nhc_lever_arm_estimated && block_stds(covariance, g.nhc_lever, 3, s)) {
+      result.nhc_lever_arm_m.std = k * Eigen::Vector3d(s[0], s[1], s[2]);
+      // Held axes (std 0 in the config) report 0: not estimated.
+      for (int i = 0; i < 3; ++i) {
+        if (log.setup.nhc_lever_arm_std_m[i] == 0.0) result.nhc_lever_arm_m.std[i] = 0.0;
+      }
+    }
   } else {
     bias_estimates(nullptr, biases, k, result);
     result.message += "; covariance not computable (a calibration parameter is unobservable in this log)";
@@ -461,6 +462,7 @@ CalibrationResult calibrate(const CalibrationLog& log, const CalibrationOptions&
     const double moved_s = std::abs(result.imu_time_offset_s.value - setup.imu_time_offset_s);
     setup.imu_time_offset_s = result.imu_time_offset_s.value;
     setup.gnss_lever_arm_m = result.gnss_lever_arm_m.value;
+    setup.nhc_lever_arm_m = result.nhc_lever_arm_m.value;
     mount_residual_rad = result.mounting_residual_rad.value;
     const bool reweight = result.imu_variance_factor > options.imu_variance_threshold &&
                           setup.imu_noise_scale < options.max_imu_noise_scale;

@@ -26,6 +26,10 @@ struct Estimate1 {
 
 struct CalibrationResult {
   Estimate3 gnss_lever_arm_m;    // vehicle frame
+  // Where the vehicle does not slip (vehicle frame): estimated when the config only guessed it
+  // (nhc.lever_arm_std_m above 0), else the configured point, std 0.
+  Estimate3 nhc_lever_arm_m;
+  bool nhc_lever_arm_estimated = false;
   // The mounting as the config key gives it (sensor -> vehicle, roll, pitch, yaw): the configured
   // one turned by the residual vehicle pitch and yaw below (mounting_dcm); the vehicle frame's
   // roll is held. The Euler angles' stds follow from the residual's covariance.

@@ -168,16 +168,20 @@ namespace navfuse::calib {
 template <int N>
 class VectorPrior {
  public:
-  VectorPrior(const Eigen::Matrix<double, N, 1>& mean, double std) : mean_(mean), inv_std_(1.0 / std) {}
+  VectorPrior(const Eigen::Matrix<double, N, 1>& mean, double std)
+      : mean_(mean), inv_std_(Eigen::Matrix<double, N, 1>::Constant(1.0 / std)) {}
+  // One std per component.
+  VectorPrior(const Eigen::Matrix<double, N, 1>& mean, const Eigen::Matrix<double, N, 1>& std)
+      : mean_(mean), inv_std_(std.cwiseInverse()) {}
   template <typename T>
   bool operator()(const T* x, T* out) const {
-    for (int i = 0; i < N; ++i) out[i] = (x[i] - T(mean_[i])) * T(inv_std_);
+    for (int i = 0; i < N; ++i) out[i] = (x[i] - T(mean_[i])) * T(inv_std_[i]);
     return true;
   }
 
  private:
   Eigen::Matrix<double, N, 1> mean_;
-  double inv_std_;
+  Eigen::Matrix<double, N, 1> inv_std_;
 };
 
 }  // namespace navfuse::calib

@@ -35,6 +35,14 @@ Eigen::Matrix<T, 3, 3> mounting_dcm(const T* residual, const Eigen::Matrix3d& c_
   return dcm_from_rpy(T(0), residual[0], residual[1]) * c_vs0.cast<T>();
 }
 
+// The config key's roll, pitch and yaw of the configured mounting turned by `residual`.
+Eigen::Vector3d mounting_rpy(const Eigen::Vector2d& residual, const Eigen::Matrix3d& c_vs0);
+
+// Their std devs from the residual's 2 x 2 covariance, through the Jacobian of the Euler angles
+// (central differences; angles wrapped): for a sensor mounted x right, z up the vehicle pitch
+// residual is the Euler roll's, so all three may be non-zero.
+Eigen::Vector3d mounting_rpy_std(const Eigen::Vector2d& residual, const Eigen::Matrix2d& cov, const Eigen::Matrix3d& c_vs0);
+
 // Vector cross product for any scalar (Eigen's cross() on Jets is fine, this keeps the types
 // explicit where a double vector meets a Jet one).
 template <typename T>

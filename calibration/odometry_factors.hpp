@@ -5,10 +5,9 @@
 // The speed is the one measured at GNSS time t_k + dt_imu: interpolated at the starting offset
 // and moved along its slope (the IMU's along-track acceleration) for the offset's change.
 // C_vs is the configured mounting turned by the residual vehicle pitch and yaw (mounting_dcm).
-// Blocks: wheel: v, q, mounting residual [pitch, yaw], k, dt_imu; NHC: v, q, mounting residual.
+// Blocks: wheel: v, q, mounting residual [pitch, yaw], k, dt_imu; NHC: v, q, mounting residual,
+// the non-slip point.
 #pragma once
-
-#include <cmath>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -19,11 +18,11 @@ namespace navfuse::calib {
 
 template <typename T>
 Eigen::Matrix<T, 3, 1> vehicle_velocity_at(const T* v, const T* q, const T* mount, const Eigen::Matrix3d& c_vs0,
-                                           const Eigen::Vector3d& rate_s_rps, const Eigen::Vector3d& lever_v_m) {
+                                           const Eigen::Vector3d& rate_s_rps, const Eigen::Matrix<T, 3, 1>& lever_v_m) {
   using V3 = Eigen::Matrix<T, 3, 1>;
   const Eigen::Matrix<T, 3, 3> r = Eigen::Map<const Eigen::Quaternion<T>>(q).toRotationMatrix();
   const Eigen::Matrix<T, 3, 3> c_vs = mounting_dcm(mount, c_vs0);
-  const V3 lever_s = c_vs.transpose() * lever_v_m.cast<T>();
+  const V3 lever_s = c_vs.transpose() * lever_v_m;
   return c_vs * (r.transpose() * Eigen::Map<const V3>(v) + cross(V3(rate_s_rps.cast<T>()), lever_s));
 }
 
@@ -38,7 +37,7 @@ class WheelSpeedFactor {
 
   template <typename T>
   bool operator()(const T* v, const T* q, const T* mount, const T* scale, const T* dt, T* out) const {
-    const Eigen::Matrix<T, 3, 1> vl = vehicle_velocity_at(v, q, mount, c_vs0_, rate_, lever_);
+    const Eigen::Matrix<T, 3, 1> vl = vehicle_velocity_at(v, q, mount, c_vs0_, rate_, Eigen::Matrix<T, 3, 1>(lever_.cast<T>()));
     const T measured = T(speed_) + T(slope_) * (dt[0] - T(dt0_));
     out[0] = (measured - scale[0] * vl.x()) * T(inv_std_);
     return true;
@@ -50,24 +49,18 @@ class WheelSpeedFactor {
   Eigen::Vector3d rate_, lever_;
 };
 
-// The point known to lever_std_v_m per axis adds the variance of its lever-arm term w x d as the
-// filter's constraint does (filter/measurements/nonholonomic.hpp), here on the diagonal only: the
-// y-z covariance, -w_y w_z sigma_x^2, is a pitch rate times a yaw rate. w is the IMU's rate turned
-// by the configured mounting (the earth rate's 7e-5 rad/s left in).
+// The non-slip point is a parameter block: held when the config gives it, estimated about it
+// (with its nhc.lever_arm_std_m as prior) when the config only guesses it (the IMU).
 class NhcFactor {
  public:
   NhcFactor(double lateral_std_mps, double vertical_std_mps, const Eigen::Matrix3d& c_vs0,
-            const Eigen::Vector3d& rate_s_rps, const Eigen::Vector3d& lever_v_m, const Eigen::Vector3d& lever_std_v_m)
-      : c_vs0_(c_vs0), rate_(rate_s_rps), lever_(lever_v_m) {
-    const Eigen::Vector3d w = c_vs0 * rate_s_rps;
-    const Eigen::Vector3d s2 = lever_std_v_m.cwiseAbs2();
-    inv_lat_ = 1.0 / std::sqrt(lateral_std_mps * lateral_std_mps + w.z() * w.z() * s2.x() + w.x() * w.x() * s2.z());
-    inv_vert_ = 1.0 / std::sqrt(vertical_std_mps * vertical_std_mps + w.y() * w.y() * s2.x() + w.x() * w.x() * s2.y());
-  }
+            const Eigen::Vector3d& rate_s_rps)
+      : inv_lat_(1.0 / lateral_std_mps), inv_vert_(1.0 / vertical_std_mps), c_vs0_(c_vs0), rate_(rate_s_rps) {}
 
   template <typename T>
-  bool operator()(const T* v, const T* q, const T* mount, T* out) const {
-    const Eigen::Matrix<T, 3, 1> vl = vehicle_velocity_at(v, q, mount, c_vs0_, rate_, lever_);
+  bool operator()(const T* v, const T* q, const T* mount, const T* lever_v_m, T* out) const {
+    const Eigen::Matrix<T, 3, 1> vl =
+        vehicle_velocity_at(v, q, mount, c_vs0_, rate_, Eigen::Matrix<T, 3, 1>(Eigen::Map<const Eigen::Matrix<T, 3, 1>>(lever_v_m)));
     out[0] = vl.y() * T(inv_lat_);
     out[1] = vl.z() * T(inv_vert_);
     return true;
@@ -76,7 +69,7 @@ class NhcFactor {
  private:
   double inv_lat_, inv_vert_;
   Eigen::Matrix3d c_vs0_;
-  Eigen::Vector3d rate_, lever_;
+  Eigen::Vector3d rate_;
 };
 
 }  // namespace navfuse::calib

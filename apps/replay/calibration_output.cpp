@@ -1,5 +1,6 @@
 #include "apps/replay/calibration_output.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -8,6 +9,7 @@
 
 #include "calibration/mounting_rotation.hpp"
 #include "core/rotation/rotation.hpp"
+#include "filter/filter_options.hpp"
 
 namespace navfuse::apps {
 namespace {
@@ -36,6 +38,9 @@ double rounded(double v, int decimals) {
 constexpr double kWrittenLeverArmStd_m = 0.05;
 constexpr double kWrittenMountingStd_rad = 0.5 * rot::kDegToRad;
 constexpr double kWrittenTimeOffsetStd_s = 0.010;
+// The non-slip point moves the constraint by yaw rate x error: 10 cm is 5 cm/s in a 0.5 rad/s
+// car-park turn, half the constraint's own std.
+constexpr double kWrittenNhcPointStd_m = 0.10;
 
 bool observed(double std, double bound) { return std > 0.0 && std <= bound; }
 
@@ -44,6 +49,7 @@ struct Written {
   std::array<bool, 3> lever{};
   std::array<bool, 2> mounting{};  // vehicle pitch, yaw residuals
   bool time_offset = false;
+  std::array<bool, 3> nhc_point{};
 };
 
 Written written(const calib::CalibrationResult& r) {
@@ -55,6 +61,10 @@ Written written(const calib::CalibrationResult& r) {
                                               observed(r.mounting_residual_rad.std[i], kWrittenMountingStd_rad);
   }
   w.time_offset = observed(r.imu_time_offset_s.std, kWrittenTimeOffsetStd_s);
+  for (int i = 0; i < 3; ++i) {
+    w.nhc_point[static_cast<std::size_t>(i)] =
+        r.nhc_lever_arm_estimated && observed(r.nhc_lever_arm_m.std[i], kWrittenNhcPointStd_m);
+  }
   return w;
 }
 
@@ -85,6 +95,11 @@ std::vector<Row> rows(const calib::CalibrationResult& r) {
                    r.mounting_residual_rad.std[i] * rot::kRadToDeg});
   }
   out.push_back({"imu.time_offset_s", "ms", r.imu_time_offset_s.value * 1e3, r.imu_time_offset_s.std * 1e3});
+  if (r.nhc_lever_arm_estimated) {
+    for (int i = 0; i < 3; ++i) {
+      out.push_back({std::string("nhc.lever_arm_m ") + axes[i], "m", r.nhc_lever_arm_m.value[i], r.nhc_lever_arm_m.std[i]});
+    }
+  }
   if (r.odometer_scale) {
     out.push_back({"odometer scale (measured/true)", "%", (r.odometer_scale->value - 1.0) * 100.0, r.odometer_scale->std * 100.0});
   }
@@ -139,14 +154,29 @@ config::Config calibrated_config(const config::Config& base, const calib::Calibr
     for (int i = 0; i < 3; ++i) c.imu.mounting_rpy_deg[static_cast<std::size_t>(i)] = rounded(rpy[i] * rot::kRadToDeg, 4);
   }
   if (w.time_offset) c.imu.time_offset_s = rounded(r.imu_time_offset_s.value, 5);
+  if (w.nhc_point[0] || w.nhc_point[1] || w.nhc_point[2]) {
+    // The point where observed, the guess elsewhere, each with how well it is now known, so the
+    // next run neither takes the guess for a measurement nor forgets the calibration's std.
+    const config::Vec3 guess = base.nhc.lever_arm_m.value_or(base.wheel.lever_arm_m);
+    const Eigen::Vector3d guess_std = filter::options_from_config(base).nhc_lever_arm_std_m;
+    config::Vec3 point = guess, point_std{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      const int a = static_cast<int>(i);
+      point[i] = w.nhc_point[i] ? rounded(r.nhc_lever_arm_m.value[a], 3) : guess[i];
+      point_std[i] = w.nhc_point[i] ? std::max(0.001, rounded(r.nhc_lever_arm_m.std[a], 3)) : guess_std[a];
+    }
+    c.nhc.lever_arm_m = point;
+    c.nhc.lever_arm_std_m = point_std;
+  }
   return c;
 }
 
 std::string calibration_yaml(const config::Config& base, const calib::CalibrationResult& r) {
   std::ostringstream s;
   s << "# navfuse smooth --calibration-out: the configuration with the calibrated keys replaced\n"
-       "# (gnss.lever_arm_m, imu.mounting_rpy_deg, imu.time_offset_s). Estimates and 1-sigma\n"
-       "# std devs from the solver's covariance (0: held at the configured value, not estimated):\n";
+       "# (gnss.lever_arm_m, imu.mounting_rpy_deg, imu.time_offset_s, and nhc.lever_arm_m where the\n"
+       "# config only guessed it). Estimates and 1-sigma std devs from the solver's covariance (0: held\n"
+       "# at the configured value, not estimated):\n";
   for (const Row& row : rows(r)) {
     s << "#   " << row.name << ": " << number(row.value, 4) << " +- " << number(row.std, 4) << " " << row.unit << "\n";
   }
@@ -166,9 +196,15 @@ std::string calibration_yaml(const config::Config& base, const calib::Calibratio
     }
   }
   if (!w.time_offset) kept += " imu.time_offset_s;";
+  for (int i = 0; i < 3; ++i) {
+    if (r.nhc_lever_arm_estimated && !w.nhc_point[static_cast<std::size_t>(i)]) {
+      kept += std::string(" nhc.lever_arm_m ") + axes[i] + ";";
+    }
+  }
   if (!kept.empty()) {
     kept.pop_back();
-    s << "# Not observed well enough to write (std dev above 5 cm, 0.5 deg, 10 ms), kept as configured:" << kept << "\n";
+    s << "# Not observed well enough to write (std dev above 5 cm, 0.5 deg, 10 ms, 10 cm for the non-slip\n"
+         "# point), kept as configured:" << kept << "\n";
   }
   if (r.mounting_is_residual) {
     s << "# The IMU reports in the vehicle frame (the device applies its own mounting): the mounting above is\n"

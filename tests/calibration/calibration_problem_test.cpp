@@ -98,6 +98,40 @@ TEST(CalibrationProblem, RecoversSimulatedInstallationOfACarThatDoesNotSlipAtIts
   expect_installation_recovered(scenario);
 }
 
+// The same car with a config that does not say where it does not slip: the constraint's point is
+// the IMU, a guess known to (1.5, 0.5, 0.5) m (nhc.lever_arm_std_m's default then). The turns show
+// the IMU's sideways velocity as yaw rate x the point's x; the calibration finds the rear axle.
+TEST(CalibrationProblem, FindsWhereACarDoesNotSlipWhenTheConfigOnlyGuesses) {
+  sim::Scenario scenario = sim::make_scenario("calibration_drive");
+  scenario.trajectory.nonslip_point_m = scenario.wheel.lever_arm_m;  // (-1.2, 0, 0.3)
+  const testing::StartingSetup start{.lever_arm_m = scenario.gnss.lever_arm_m + Eigen::Vector3d(0.3, -0.2, 0.4),
+                                     .mounting_rpy_deg = Eigen::Vector3d(scenario.imu.mounting_rpy_deg.x(), 0.0, 0.0),
+                                     .imu_time_offset_s = 0.0};
+  testing::SimLog s = testing::sim_log(scenario, start);
+  s.log.setup.nhc_lever_arm_m = Eigen::Vector3d::Zero();
+  s.log.setup.nhc_lever_arm_std_m = Eigen::Vector3d(1.5, 0.5, 0.5);
+  const CalibrationResult r = calibrate(s.log);
+  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.covariance_ok) << r.message;
+  ASSERT_TRUE(r.nhc_lever_arm_estimated);
+  const Eigen::Vector3d err = r.nhc_lever_arm_m.value - scenario.trajectory.nonslip_point_m;
+  std::printf("non-slip point %.3f %.3f %.3f m (std %.3f %.3f %.3f); GNSS lever error %.4f %.4f %.4f m; "
+              "yaw error %.4f deg; offset error %.3f ms\n",
+              r.nhc_lever_arm_m.value.x(), r.nhc_lever_arm_m.value.y(), r.nhc_lever_arm_m.value.z(),
+              r.nhc_lever_arm_m.std.x(), r.nhc_lever_arm_m.std.y(), r.nhc_lever_arm_m.std.z(),
+              r.gnss_lever_arm_m.value.x() - scenario.gnss.lever_arm_m.x(),
+              r.gnss_lever_arm_m.value.y() - scenario.gnss.lever_arm_m.y(),
+              r.gnss_lever_arm_m.value.z() - scenario.gnss.lever_arm_m.z(),
+              r.mounting_rpy_rad.value.z() * rot::kRadToDeg - scenario.imu.mounting_rpy_deg.z(),
+              (r.imu_time_offset_s.value - scenario.imu.time_offset_s) * 1e3);
+  EXPECT_LT(std::abs(err.x()), 0.05);
+  EXPECT_LT(std::abs(err.x()), kSigmas * r.nhc_lever_arm_m.std.x());
+  EXPECT_LT(r.nhc_lever_arm_m.std.x(), 0.05);
+  for (int i = 0; i < 3; ++i) EXPECT_LT(std::abs(r.gnss_lever_arm_m.value[i] - scenario.gnss.lever_arm_m[i]), 0.02) << i;
+  EXPECT_LT(std::abs(r.mounting_rpy_rad.value.z() * rot::kRadToDeg - scenario.imu.mounting_rpy_deg.z()), 0.1);
+  EXPECT_LT(std::abs(r.imu_time_offset_s.value - scenario.imu.time_offset_s), 0.002);
+}
+
 // A dual-antenna receiver and no odometry (not a land vehicle: no NHC either): the heading alone
 // sees the mounting's yaw, the angle between the baseline the receiver measures and the axes the
 // IMU turns. The baseline, 1.5 m at 36.9 deg to the vehicle's x axis, is configured right.
