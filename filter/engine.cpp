@@ -126,7 +126,7 @@ void Engine::fuse_entry(Entry& e) {
 
 void Engine::count(MeasurementKind kind, const FuseResult& r) {
   KindStats& st = stats_.of(kind);
-  if (r.rows > 0) st.innovation.add(r.nis, r.rows, !r.used && r.reason == RejectReason::kChi2Gate);
+  r.count_innovation(st.innovation);
   if (r.used) {
     ++st.used;
   } else {

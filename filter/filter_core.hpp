@@ -42,6 +42,10 @@ struct FuseResult {
   std::array<double, 3> innovation_std{};  // sqrt(diag S), per row
   static FuseResult ok() { return FuseResult{true, RejectReason::kInvalid}; }
   static FuseResult reject(RejectReason r) { return FuseResult{false, r}; }
+  // Into `stats` when an update was tried (accepted or gated).
+  void count_innovation(InnovationStats& stats) const {
+    if (rows > 0) stats.add(nis, rows, !used && reason == RejectReason::kChi2Gate);
+  }
 };
 
 // Levelling accumulator (alignment.cpp).

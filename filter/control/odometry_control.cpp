@@ -86,7 +86,7 @@ void apply_nonholonomic(FilterCore& c, const FilterOptions& o) {
                                                    o.nhc_lever_arm_std_m, o.nhc_lateral_std_mps,
                                                    o.nhc_vertical_std_mps);
   const FuseResult r = c.apply(o, obs, o.gate_for(GatedAid::kNhc, obs.rows()));
-  if (r.rows > 0) c.mode.nhc_innovation.add(r.nis, r.rows, !r.used && r.reason == RejectReason::kChi2Gate);
+  r.count_innovation(c.mode.nhc_innovation);
   if (r.used) ++c.mode.nhc_updates;
 }
 
