@@ -124,6 +124,8 @@ struct FilterOptions {
   // The point that does not slip sideways or leave the road (the rear-axle centre of a car);
   // nullopt: the wheel lever arm, which is where odometers usually measure.
   std::optional<Eigen::Vector3d> nhc_lever_arm_m;
+  // Where the constraint is applied: nhc_lever_arm_m, else the wheel lever arm.
+  Eigen::Vector3d nhc_point_m() const { return nhc_lever_arm_m.value_or(wheel_lever_arm_m); }
   // How well that point is known, 1 sigma per vehicle axis: its uncertainty enters the constraint's
   // noise through the rotation (nonholonomic.hpp). Zero: known.
   Eigen::Vector3d nhc_lever_arm_std_m = Eigen::Vector3d::Zero();

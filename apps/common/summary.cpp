@@ -23,6 +23,8 @@ void print_innovation_line(std::ostream& os, std::string_view name, const Innova
      << std::defaultfloat;
 }
 
+constexpr const char* kInnovationsHeader = "innovations (updates tried; a consistent filter has NIS per dimension ~1):\n";
+
 }  // namespace
 
 nlohmann::ordered_json Summary::to_json(bool decode_only) const {
@@ -147,13 +149,13 @@ void Summary::print_innovations(std::ostream& os) const {
     const auto& in = kinds[k].innovation;
     if (!in || in->count == 0) continue;
     if (!header) {
-      os << "innovations (updates tried; a consistent filter has NIS per dimension ~1):\n";
+      os << kInnovationsHeader;
       header = true;
     }
     print_innovation_line(os, to_string(static_cast<MeasurementKind>(k)), *in);
   }
   if (nhc && nhc->count > 0) {
-    if (!header) os << "innovations (updates tried; a consistent filter has NIS per dimension ~1):\n";
+    if (!header) os << kInnovationsHeader;
     print_innovation_line(os, "nhc (constraint)", *nhc);
     os << "    (its std is a tolerance: far below 1 where the vehicle does not slip at nhc.lever_arm_m)\n";
   }

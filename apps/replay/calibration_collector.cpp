@@ -25,7 +25,7 @@ CalibrationCollector::CalibrationCollector(const filter::FilterOptions& o) : opt
   s.imu_time_offset_s = o.imu_time_offset_s;
   s.wheel_lever_arm_m = o.wheel_lever_arm_m;
   s.heading_baseline_v_m = filter::heading_baseline_b(o.gnss_lever_arm_m, o.gnss_secondary_lever_arm_m);
-  s.nhc_lever_arm_m = o.nhc_lever_arm_m.value_or(o.wheel_lever_arm_m);
+  s.nhc_lever_arm_m = o.nhc_point_m();
   s.nhc_lever_arm_std_m = o.nhc_lever_arm_std_m;
   s.land_vehicle = o.land_vehicle;
   s.nhc_lateral_std_mps = o.nhc_lateral_std_mps;

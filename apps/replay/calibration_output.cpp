@@ -157,12 +157,13 @@ config::Config calibrated_config(const config::Config& base, const calib::Calibr
   if (w.nhc_point[0] || w.nhc_point[1] || w.nhc_point[2]) {
     // The point where observed, the guess elsewhere, each with how well it is now known, so the
     // next run neither takes the guess for a measurement nor forgets the calibration's std.
-    const config::Vec3 guess = base.nhc.lever_arm_m.value_or(base.wheel.lever_arm_m);
-    const Eigen::Vector3d guess_std = filter::options_from_config(base).nhc_lever_arm_std_m;
-    config::Vec3 point = guess, point_std{};
+    const filter::FilterOptions configured = filter::options_from_config(base);
+    const Eigen::Vector3d guess = configured.nhc_point_m();
+    const Eigen::Vector3d guess_std = configured.nhc_lever_arm_std_m;
+    config::Vec3 point{}, point_std{};
     for (std::size_t i = 0; i < 3; ++i) {
       const int a = static_cast<int>(i);
-      point[i] = w.nhc_point[i] ? rounded(r.nhc_lever_arm_m.value[a], 3) : guess[i];
+      point[i] = w.nhc_point[i] ? rounded(r.nhc_lever_arm_m.value[a], 3) : guess[a];
       point_std[i] = w.nhc_point[i] ? std::max(0.001, rounded(r.nhc_lever_arm_m.std[a], 3)) : guess_std[a];
     }
     c.nhc.lever_arm_m = point;

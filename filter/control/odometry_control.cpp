@@ -82,7 +82,7 @@ void apply_nonholonomic(FilterCore& c, const FilterOptions& o) {
   if (c.odometry.last_nhc_ns != INT64_MIN && c.x.time_ns / grid_ns == c.odometry.last_nhc_ns / grid_ns) return;
   if (c.x.vel_ned_mps.norm() < o.nhc_min_speed_mps) return;
   c.odometry.last_nhc_ns = c.x.time_ns;
-  const Observation obs = nonholonomic_observation(c.view(0.0), o.nhc_lever_arm_m.value_or(o.wheel_lever_arm_m),
+  const Observation obs = nonholonomic_observation(c.view(0.0), o.nhc_point_m(),
                                                    o.nhc_lever_arm_std_m, o.nhc_lateral_std_mps,
                                                    o.nhc_vertical_std_mps);
   const FuseResult r = c.apply(o, obs, o.gate_for(GatedAid::kNhc, obs.rows()));
