@@ -66,7 +66,7 @@ std::size_t nearest_imu(const std::vector<ImuSample>& imu, std::int64_t time_ns)
 }
 
 EpochPlan plan_epochs(const CalibrationLog& log, const CalibrationSetup& setup, const LocalFrame& frame,
-                      double max_spacing_s, double max_imu_gap_s) {
+                      double max_spacing_s, double max_imu_gap_s, double knowns_half_window_s) {
   EpochPlan plan;
   if (log.imu.size() < 2 || log.trajectory.empty()) return plan;
   const auto offset_ns = static_cast<std::int64_t>(std::llround(setup.imu_time_offset_s * kNsPerS));
@@ -76,6 +76,7 @@ EpochPlan plan_epochs(const CalibrationLog& log, const CalibrationSetup& setup, 
     return trajectory_at(log.trajectory, imu_time_ns + shift_ns, tolerance_ns);
   };
   const auto tolerance_ns = static_cast<std::int64_t>(0.02 * kNsPerS);
+  const auto half_window_ns = static_cast<std::int64_t>(std::llround(knowns_half_window_s * kNsPerS));
 
   // The samples at the fixes (the receiver's and external aiding's positions), then fill-ins
   // between fixes further apart than the spacing.
@@ -127,10 +128,29 @@ EpochPlan plan_epochs(const CalibrationLog& log, const CalibrationSetup& setup, 
     e.p = {p.x(), p.y(), p.z()};
     e.v = {v.x(), v.y(), v.z()};
     e.q = {q.x(), q.y(), q.z(), q.w()};
-    const ImuRates r = imu_rates(log.imu, i);
     e.knowns.c_vs0 = c_vs;
-    e.knowns.rate_s_rps = r.gyro_rps - plan.bg0 - c_ts.transpose() * frame.earth_rate();
-    e.knowns.accel_t_mps2 = c_ts * (r.accel_mps2 - plan.ba0) + frame.gravity(e.llh) - 2.0 * frame.earth_rate().cross(v);
+    // The rate and acceleration as the trajectory changes over +-half_window (its attitude and
+    // velocity differenced): one sample's would carry the vibration (10-60 times the data sheet's
+    // noise on a car, imu_white_noise.hpp) into the first-order time shifts as a noisy regressor,
+    // which biases the offset towards zero (errors in variables). Over 0.25 s that noise falls
+    // by sqrt(25) at 100 Hz, while a central difference is exact up to the jerk's change.
+    const TrajectoryPoint* behind = traj_at(e.time_ns - half_window_ns, tolerance_ns);
+    const TrajectoryPoint* ahead = traj_at(e.time_ns + half_window_ns, tolerance_ns);
+    if (half_window_ns > 0 && behind != nullptr && ahead != nullptr && ahead->time_ns > behind->time_ns) {
+      const double span_s = static_cast<double>(ahead->time_ns - behind->time_ns) / kNsPerS;
+      const auto c_ts_at = [&](const TrajectoryPoint& tp) -> Eigen::Matrix3d {
+        return frame.rot_from_ned({tp.lat_rad, tp.lon_rad, tp.height_m}) * tp.q_nv.toRotationMatrix() * c_vs;
+      };
+      const Eigen::Matrix3d c_ts_behind = c_ts_at(*behind), c_ts_ahead = c_ts_at(*ahead);
+      e.knowns.rate_s_rps = rot::rotvec_from_quat(Eigen::Quaterniond(c_ts_behind.transpose() * c_ts_ahead)) / span_s;
+      const Eigen::Vector3d v_behind = frame.rot_from_ned({behind->lat_rad, behind->lon_rad, behind->height_m}) * behind->vel_ned_mps;
+      const Eigen::Vector3d v_ahead = frame.rot_from_ned({ahead->lat_rad, ahead->lon_rad, ahead->height_m}) * ahead->vel_ned_mps;
+      e.knowns.accel_t_mps2 = (v_ahead - v_behind) / span_s;
+    } else {
+      const ImuRates r = imu_rates(log.imu, i);
+      e.knowns.rate_s_rps = r.gyro_rps - plan.bg0 - c_ts.transpose() * frame.earth_rate();
+      e.knowns.accel_t_mps2 = c_ts * (r.accel_mps2 - plan.ba0) + frame.gravity(e.llh) - 2.0 * frame.earth_rate().cross(v);
+    }
     if (!plan.epochs.empty()) {
       e.chained = true;
       for (std::size_t j = previous + 1; j <= i; ++j) {

@@ -60,6 +60,6 @@ struct EpochPlan {
 // configured offset, is read that much later (its state at a stamp is where the filter put the
 // GNSS time stamp + configured offset).
 EpochPlan plan_epochs(const CalibrationLog& log, const CalibrationSetup& setup, const LocalFrame& frame,
-                      double max_spacing_s, double max_imu_gap_s);
+                      double max_spacing_s, double max_imu_gap_s, double knowns_half_window_s);
 
 }  // namespace navfuse::calib

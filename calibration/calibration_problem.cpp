@@ -16,6 +16,7 @@
 #include "calibration/calibration_epochs.hpp"
 #include "calibration/gnss_factors.hpp"
 #include "calibration/imu_preintegration.hpp"
+#include "calibration/imu_white_noise.hpp"
 #include "calibration/local_frame.hpp"
 #include "calibration/mounting_rotation.hpp"
 #include "calibration/odometry_factors.hpp"
@@ -90,7 +91,8 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
   }
   const TrajectoryPoint& first = log.trajectory.front();
   const LocalFrame frame({first.lat_rad, first.lon_rad, first.height_m});
-  EpochPlan plan = plan_epochs(log, setup, frame, options.max_epoch_spacing_s, options.max_imu_gap_s);
+  EpochPlan plan = plan_epochs(log, setup, frame, options.max_epoch_spacing_s, options.max_imu_gap_s,
+                               options.knowns_half_window_s);
   std::vector<Epoch>& epochs = plan.epochs;
   if (epochs.size() < 3) {
     result.message = "fewer than 3 epochs where GNSS or external position fixes meet the smoothed trajectory";
@@ -117,14 +119,41 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
 
   // IMU factors.
   const double noise_std_scale = std::sqrt(setup.imu_noise_scale);
-  const ImuNoiseDensity noise{.gyro_rad_rts = noise_std_scale * setup.gyro_arw_rad_rts,
-                              .accel_mps_rts = noise_std_scale * setup.accel_vrw_mps_rts};
+  const auto imu_period_ns = (log.imu.back().header.time_ns - log.imu.front().header.time_ns) /
+                             static_cast<std::int64_t>(log.imu.size() - 1);
+  const auto noise_half_window = static_cast<std::size_t>(
+      std::max(0.0, 0.5 * options.imu_noise_window_s * kNsPerS / static_cast<double>(std::max<std::int64_t>(imu_period_ns, 1))));
+  std::vector<double> measured_gyro, measured_accel;  // per IMU factor, for the result's medians
   std::vector<ceres::ResidualBlockId> imu_blocks;
   for (std::size_t k = 1; k < epochs.size(); ++k) {
     Epoch& a = epochs[k - 1];
     Epoch& b = epochs[k];
     if (!b.chained) continue;
     const Eigen::Matrix3d c_ts = Eigen::Quaterniond(a.q[3], a.q[0], a.q[1], a.q[2]).toRotationMatrix();
+    ImuNoiseDensity noise{.gyro_rad_rts = setup.gyro_arw_rad_rts, .accel_mps_rts = setup.accel_vrw_mps_rts};
+    if (options.imu_noise_window_s > 0.0) {
+      const std::size_t centre = (a.imu_index + b.imu_index) / 2;
+      // At least 8 of the interval's blocks (16 second differences at one sample's steps).
+      const std::size_t half = std::max(noise_half_window, 4 * (b.imu_index - a.imu_index + 1));
+      const std::size_t first = centre > half ? centre - half : 0;
+      // The smaller of what single samples and blocks as long as the interval show: white noise
+      // looks the same at both; an engine tone mostly cancels over the interval (as this
+      // factor's increments do) but not between samples; the body's own motion (a walker's
+      // steps, a bumpy road's real accelerations) grows with the block and barely shows between
+      // samples.
+      const double interval_s = static_cast<double>(b.time_ns - a.time_ns) / kNsPerS;
+      const std::size_t last = std::min(log.imu.size() - 1, centre + half);
+      const ImuWhiteNoise w = least_white_noise(measure_white_noise(log.imu, first, last),
+                                                measure_white_noise(log.imu, first, last, interval_s));
+      if (w.samples > 0) {
+        measured_gyro.push_back(w.gyro_rad_rts);
+        measured_accel.push_back(w.accel_mps_rts);
+        noise.gyro_rad_rts = std::max(noise.gyro_rad_rts, w.gyro_rad_rts);
+        noise.accel_mps_rts = std::max(noise.accel_mps_rts, w.accel_mps_rts);
+      }
+    }
+    noise.gyro_rad_rts *= noise_std_scale;
+    noise.accel_mps_rts *= noise_std_scale;
     ImuPreintegration pre(plan.bg0, plan.ba0, c_ts, frame.earth_rate(), noise);
     for (std::size_t i = a.imu_index + 1; i <= b.imu_index; ++i) {
       const StartFrameIncrements d = start_frame_increments(log.imu, i);
@@ -141,6 +170,14 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
     ++result.imu_factors;
   }
   add_bias_steps(problem, biases);
+  if (!measured_gyro.empty()) {
+    const auto median = [](std::vector<double>& v) {
+      std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+      return v[v.size() / 2];
+    };
+    result.measured_gyro_noise_rad_rts = median(measured_gyro);
+    result.measured_accel_noise_mps_rts = median(measured_accel);
+  }
   if (result.imu_factors == 0) {
     result.message = "no two epochs are linked by IMU samples";
     return result;
@@ -148,8 +185,6 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
 
   // GNSS factors at the epoch nearest each fix (through the configured offset).
   const auto offset_ns = static_cast<std::int64_t>(std::llround(setup.imu_time_offset_s * kNsPerS));
-  const auto imu_period_ns = (log.imu.back().header.time_ns - log.imu.front().header.time_ns) /
-                             static_cast<std::int64_t>(log.imu.size() - 1);
   auto epoch_near = [&](std::int64_t gnss_time_ns) -> Epoch* {
     const std::int64_t t = gnss_time_ns - offset_ns;
     const auto it = std::lower_bound(epochs.begin(), epochs.end(), t,

@@ -31,6 +31,9 @@ namespace navfuse::calib {
 struct CalibrationOptions {
   double max_epoch_spacing_s = 0.5;
   double max_imu_gap_s = 1.0;
+  // The epochs' rate and acceleration (the first-order time shifts' knowns) are the smoothed
+  // trajectory's change over +-this (calibration_epochs.cpp); 0 takes the epoch's IMU sample.
+  double knowns_half_window_s = 0.125;
   int max_iterations = 50;
   double huber_sigmas = 2.0;  // whitened residual beyond which a loss grows linearly
   double lever_arm_prior_std_m = 0.5;  // around the configured lever arm (gnss_factors.hpp VectorPrior)
@@ -47,6 +50,11 @@ struct CalibrationOptions {
   // `max_imu_noise_scale` in all (1e4: std x 100, beyond anything vibration does to a bolted IMU).
   double imu_variance_threshold = 1.5;
   double max_imu_noise_scale = 1e4;
+  // Each IMU factor's white noise is at least what the samples around it show (imu_white_noise.hpp:
+  // vibration), measured in blocks as long as its interval over this long a window centred on it
+  // (8 intervals when longer: vibration follows speed, so the window stays short); 0 uses the
+  // data sheet's figures alone.
+  double imu_noise_window_s = 4.0;
   BiasSegmentOptions bias_segments;
 };
 

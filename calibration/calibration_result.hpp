@@ -70,6 +70,11 @@ struct CalibrationResult {
   // IMU's noise is what the preintegration assumed), and the variance multiplier it was solved with.
   double imu_variance_factor = 1.0;
   double imu_noise_scale = 1.0;
+  // The IMU's white noise measured from its samples (imu_white_noise.hpp), median over the IMU
+  // factors; each factor used the larger of its own measurement and the data sheet's (0: not
+  // measured).
+  double measured_gyro_noise_rad_rts = 0.0;
+  double measured_accel_noise_mps_rts = 0.0;
   double wall_s = 0.0;
   bool converged = false;
   bool covariance_ok = false;

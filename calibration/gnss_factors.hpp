@@ -8,8 +8,8 @@
 // the first-order shift; tau - dt_imu stays within the IMU period plus the offset's correction).
 //   antenna position  p + R C_sv l + v_a (tau - dt_imu),  v_a = v + R (omega_s x C_sv l)
 //   antenna velocity  v_a + a (tau - dt_imu)
-// omega_s (bias-compensated rate) and a (the acceleration) at the epoch are known terms from the
-// starting solution. The mounting is the configured one turned by the residual vehicle pitch and
+// omega_s (the rate w.r.t. the earth) and a (the acceleration) at the epoch are known terms from
+// the starting solution's change over a few IMU samples (calibration_epochs.cpp). The mounting is the configured one turned by the residual vehicle pitch and
 // yaw (mounting_dcm); its roll is held (unobservable from odometry).
 // Blocks: p, v, q, lever arm (vehicle frame), mounting residual [pitch, yaw], dt_imu.
 #pragma once

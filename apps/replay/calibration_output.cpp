@@ -16,6 +16,9 @@ namespace {
 
 constexpr double kMps2PerMg = 9.80665e-3;  // standard gravity / 1000
 constexpr double kDegHPerRps = rot::kRadToDeg * 3600.0;
+// A random walk's density per sqrt(s) to per sqrt(h), as the config's imu.*_rthr keys take it.
+constexpr double kPerRthrPerRts = 60.0;
+constexpr double kDegRthrPerRadRts = rot::kRadToDeg * kPerRthrPerRts;
 
 // A bias segment's start from the first segment's (the log's first epoch).
 double segment_start_s(const calib::CalibrationResult& r, const calib::CalibrationResult::BiasSegment& b) {
@@ -132,8 +135,12 @@ std::string solve_line(const calib::CalibrationResult& r) {
     << r.gnss_velocity_residuals << " velocities, " << r.gnss_heading_residuals << " headings, " << r.external_residuals
     << " external aiding, " << r.speed_residuals << " wheel speeds, " << r.nhc_residuals << " NHC, " << r.bias_segments.size() << " bias segment(s); " << r.iterations << " iterations, " << (r.converged ? "converged" : "NOT converged")
     << ", GNSS position residual RMS " << number(r.position_rms_m, 3) << " m, IMU noise variances x"
-    << number(r.imu_noise_scale, 2) << " (IMU residuals " << number(r.imu_variance_factor, 2) << " per dimension), "
-    << number(r.wall_s, 1) << " s";
+    << number(r.imu_noise_scale, 2) << " (IMU residuals " << number(r.imu_variance_factor, 2) << " per dimension), ";
+  if (r.measured_gyro_noise_rad_rts > 0.0) {
+    s << "IMU white noise in its samples " << number(r.measured_gyro_noise_rad_rts * kDegRthrPerRadRts, 3)
+      << " deg/sqrt(h), " << number(r.measured_accel_noise_mps_rts * kPerRthrPerRts, 3) << " m/s/sqrt(h) (median), ";
+  }
+  s << number(r.wall_s, 1) << " s";
   return s.str();
 }
 
@@ -269,6 +276,8 @@ nlohmann::ordered_json calibration_json(const calib::CalibrationResult& r) {
   j["position_rms_m"] = r.position_rms_m;
   j["imu_noise_scale"] = r.imu_noise_scale;
   j["imu_variance_factor"] = r.imu_variance_factor;
+  j["measured_gyro_arw_deg_rthr"] = r.measured_gyro_noise_rad_rts * kDegRthrPerRadRts;
+  j["measured_accel_vrw_mps_rthr"] = r.measured_accel_noise_mps_rts * kPerRthrPerRts;
   j["wall_s"] = r.wall_s;
   j["message"] = r.message;
   return j;
