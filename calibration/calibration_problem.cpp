@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdint>
 #include <deque>
 #include <cmath>
 #include <limits>
@@ -78,8 +79,11 @@ bool block_covariance(ceres::Covariance& cov, const double* block, int size, Eig
 }
 
 // One solve, linearised about `setup` and the mounting residual found so far (see calibrate()).
+// `placement` receives a fingerprint of which IMU samples the epochs sit at (FNV-1a of their
+// indices), so that calibrate() can tell a pass that pairs the fixes as an earlier one did.
 CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& setup,
-                             const Eigen::Vector2d& mount_residual_rad, const CalibrationOptions& options) {
+                             const Eigen::Vector2d& mount_residual_rad, const CalibrationOptions& options,
+                             std::uint64_t& placement) {
   CalibrationResult result;
   result.gnss_lever_arm_m.value = setup.gnss_lever_arm_m;
   result.mounting_residual_rad.value = mount_residual_rad;
@@ -99,6 +103,8 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
     return result;
   }
   result.epochs = epochs.size();
+  placement = 14695981039346656037ull;
+  for (const Epoch& e : epochs) placement = (placement ^ e.imu_index) * 1099511628211ull;
 
   Globals g;
   for (int i = 0; i < 3; ++i) g.lever[i] = setup.gnss_lever_arm_m[i];
@@ -490,10 +496,37 @@ CalibrationResult calibrate(const CalibrationLog& log, const CalibrationOptions&
   // the epochs turn it into the sensor's); the residual found so far is carried instead.
   CalibrationSetup setup = log.setup;
   Eigen::Vector2d mount_residual_rad = Eigen::Vector2d::Zero();
+  // The passes so far. Under vibration a pass's estimate depends on the offset it was
+  // linearised about, and more than one for one: on parking_drive (seed 1, second round) a pass
+  // from -124.4 ms gave -126.1, one from -126.1 gave -122.0, and the passes alternated between
+  // the two until the pass limit (why so strongly is not known: the knowns and the starting
+  // states are read at that offset, the pairing of fixes with samples was the same). A pass
+  // whose epochs pair the fixes as an earlier one's did (with the same IMU weights) therefore
+  // ends the loop: of the passes since that one, the one whose estimate lies nearest the offset
+  // it was linearised about, the most nearly consistent, is kept.
+  struct Pass {
+    std::uint64_t placement;
+    double noise_scale;
+    double placed_at_s;
+    CalibrationResult result;
+  };
+  std::vector<Pass> passes;
   CalibrationResult result;
   for (int pass = 0; pass < options.max_passes; ++pass) {
-    result = solve_once(log, setup, mount_residual_rad, options);
+    std::uint64_t placement = 0;
+    result = solve_once(log, setup, mount_residual_rad, options, placement);
     if (result.iterations == 0 || !result.converged) break;
+    const auto seen = std::find_if(passes.begin(), passes.end(), [&](const Pass& p) {
+      return p.placement == placement && p.noise_scale == setup.imu_noise_scale;
+    });
+    if (seen != passes.end()) {
+      const auto inconsistency = [](const Pass& p) { return std::abs(p.result.imu_time_offset_s.value - p.placed_at_s); };
+      result = std::min_element(seen, passes.end(), [&](const Pass& a, const Pass& b) {
+                 return inconsistency(a) < inconsistency(b);
+               })->result;
+      break;
+    }
+    passes.push_back({placement, setup.imu_noise_scale, setup.imu_time_offset_s, result});
     const double moved_s = std::abs(result.imu_time_offset_s.value - setup.imu_time_offset_s);
     setup.imu_time_offset_s = result.imu_time_offset_s.value;
     setup.gnss_lever_arm_m = result.gnss_lever_arm_m.value;
