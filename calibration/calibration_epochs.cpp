@@ -138,14 +138,17 @@ EpochPlan plan_epochs(const CalibrationLog& log, const CalibrationSetup& setup, 
     const TrajectoryPoint* ahead = traj_at(e.time_ns + half_window_ns, tolerance_ns);
     if (half_window_ns > 0 && behind != nullptr && ahead != nullptr && ahead->time_ns > behind->time_ns) {
       const double span_s = static_cast<double>(ahead->time_ns - behind->time_ns) / kNsPerS;
-      const auto c_ts_at = [&](const TrajectoryPoint& tp) -> Eigen::Matrix3d {
-        return frame.rot_from_ned({tp.lat_rad, tp.lon_rad, tp.height_m}) * tp.q_nv.toRotationMatrix() * c_vs;
+      struct Tangent {
+        Eigen::Matrix3d c_ts;
+        Eigen::Vector3d v;
       };
-      const Eigen::Matrix3d c_ts_behind = c_ts_at(*behind), c_ts_ahead = c_ts_at(*ahead);
-      e.knowns.rate_s_rps = rot::rotvec_from_quat(Eigen::Quaterniond(c_ts_behind.transpose() * c_ts_ahead)) / span_s;
-      const Eigen::Vector3d v_behind = frame.rot_from_ned({behind->lat_rad, behind->lon_rad, behind->height_m}) * behind->vel_ned_mps;
-      const Eigen::Vector3d v_ahead = frame.rot_from_ned({ahead->lat_rad, ahead->lon_rad, ahead->height_m}) * ahead->vel_ned_mps;
-      e.knowns.accel_t_mps2 = (v_ahead - v_behind) / span_s;
+      const auto tangent = [&](const TrajectoryPoint& tp) {
+        const Eigen::Matrix3d c_tn_p = frame.rot_from_ned({tp.lat_rad, tp.lon_rad, tp.height_m});
+        return Tangent{c_tn_p * tp.q_nv.toRotationMatrix() * c_vs, c_tn_p * tp.vel_ned_mps};
+      };
+      const Tangent b = tangent(*behind), f = tangent(*ahead);
+      e.knowns.rate_s_rps = rot::rotvec_from_quat(Eigen::Quaterniond(b.c_ts.transpose() * f.c_ts)) / span_s;
+      e.knowns.accel_t_mps2 = (f.v - b.v) / span_s;
     } else {
       const ImuRates r = imu_rates(log.imu, i);
       e.knowns.rate_s_rps = r.gyro_rps - plan.bg0 - c_ts.transpose() * frame.earth_rate();

@@ -19,6 +19,7 @@
 #include "calibration/imu_preintegration.hpp"
 #include "calibration/imu_white_noise.hpp"
 #include "calibration/local_frame.hpp"
+#include "calibration/median.hpp"
 #include "calibration/mounting_rotation.hpp"
 #include "calibration/odometry_factors.hpp"
 #include "calibration/preintegration_factor.hpp"
@@ -177,12 +178,8 @@ CalibrationResult solve_once(const CalibrationLog& log, const CalibrationSetup& 
   }
   add_bias_steps(problem, biases);
   if (!measured_gyro.empty()) {
-    const auto median = [](std::vector<double>& v) {
-      std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-      return v[v.size() / 2];
-    };
-    result.measured_gyro_noise_rad_rts = median(measured_gyro);
-    result.measured_accel_noise_mps_rts = median(measured_accel);
+    result.measured_gyro_noise_rad_rts = median_in_place(measured_gyro);
+    result.measured_accel_noise_mps_rts = median_in_place(measured_accel);
   }
   if (result.imu_factors == 0) {
     result.message = "no two epochs are linked by IMU samples";

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "calibration/calibration_epochs.hpp"
+#include "calibration/median.hpp"
 
 namespace navfuse::calib {
 namespace {
@@ -13,12 +14,6 @@ namespace {
 constexpr double kChi2Median1 = 0.454936423119572;
 // var(x_{k+1} - 2 x_k + x_{k-1}) = (1 + 4 + 1) sigma^2 for white x.
 constexpr double kSecondDifferenceGain = 6.0;
-
-double median_in_place(std::vector<double>& v) {
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
 
 }  // namespace
 
