@@ -157,14 +157,25 @@ void MeasurementMerger::push_head(std::size_t i) {
   heads_.push({s.recorded != nullptr ? s.key : header_of(s.queue[s.head]).time_ns, i});
 }
 
-bool MeasurementMerger::next(Measurement& out) {
-  if (heads_.empty()) return false;
+const Measurement* MeasurementMerger::next() {
+  if (taken_from_) {
+    const std::size_t i = *taken_from_;
+    taken_from_.reset();
+    refill(i);
+    push_head(i);
+  }
+  if (heads_.empty()) return nullptr;
   const std::size_t i = heads_.top().input;
   heads_.pop();
+  taken_from_ = i;
   Stream& s = *streams_[i];
-  out = s.queue[s.head++];
-  refill(i);
-  push_head(i);
+  return &s.queue[s.head++];
+}
+
+bool MeasurementMerger::next(Measurement& out) {
+  const Measurement* m = next();
+  if (m == nullptr) return false;
+  out = *m;
   return true;
 }
 

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <queue>
 #include <string>
 #include <vector>
@@ -46,8 +47,11 @@ class MeasurementMerger {
   MeasurementMerger(const MeasurementMerger&) = delete;
   MeasurementMerger& operator=(const MeasurementMerger&) = delete;
 
-  // Next measurement in merged time order; false once every input is exhausted. Throws
-  // CommandError on a read error or (unless allowed) a truncated input.
+  // Next measurement in merged time order, valid until the next call (it stays in its input's
+  // queue: no copy); nullptr once every input is exhausted. Throws CommandError on a read error
+  // or (unless allowed) a truncated input.
+  const Measurement* next();
+  // The same, copied into `out`; false once every input is exhausted.
   bool next(Measurement& out);
 
   // Per input: path, format and the decoder's counters (final after next() returned false).
@@ -83,6 +87,9 @@ class MeasurementMerger {
   std::uint64_t bytes_read_ = 0;
   std::uint64_t total_bytes_ = 0;
   std::vector<std::string> truncated_;
+  // The input the last next() took from: refilled (and its head queued) by the following call,
+  // once the measurement it returned is done with.
+  std::optional<std::size_t> taken_from_;
 };
 
 }  // namespace navfuse::apps

@@ -2,6 +2,8 @@
 
 #include <pthread.h>
 
+#include "core/cpu/prefetch.hpp"
+
 namespace navfuse::apps {
 namespace {
 // 256 epochs per hand-over keep lock traffic negligible (one lock per ~1 ms of a 200 Hz log at
@@ -31,6 +33,10 @@ PoseOutputThread::~PoseOutputThread() {
 
 OutputEpoch& PoseOutputThread::next_slot() {
   if (next_slot_ == slots_.size()) slots_.emplace_back();  // first lap: within the reservation
+  // The slot two ahead was last read by the writer thread, on the other core: ask for the part
+  // the filter thread writes (the captured solution inputs) before it gets there.
+  const std::size_t ahead = (next_slot_ + 2) % kSlots;
+  if (ahead < slots_.size()) cpu::prefetch_for_write(&slots_[ahead].solution_inputs, sizeof(filter::SolutionInputs));
   return slots_[next_slot_];
 }
 

@@ -56,6 +56,9 @@ std::optional<GeoidGrid> GeoidGrid::load(const std::string& path, std::string* e
   const std::size_t n = static_cast<std::size_t>(g.rows_) * static_cast<std::size_t>(g.cols_);
   if (file_size != kGtxHeaderBytes + 4 * n) return fail("GTX size does not match its header");
   g.nodes_ = g.file_.get() + kGtxHeaderBytes;
+  const bool repeats_first_column = std::abs(g.dlon_deg_ * (g.cols_ - 1) - 360.0) < 1e-9;
+  g.global_ = std::abs(g.dlon_deg_ * g.cols_ - 360.0) < 1e-9 || repeats_first_column;
+  g.wrap_cols_ = repeats_first_column ? g.cols_ - 1 : g.cols_;
   return g;
 }
 
@@ -75,20 +78,19 @@ std::optional<double> GeoidGrid::undulation_m(double lat_rad, double lon_rad) co
   double lon = lon_rad * kRadToDeg;
   const double row_f = (lat - lat0_deg_) / dlat_deg_;
   if (row_f < 0.0 || row_f > rows_ - 1) return std::nullopt;
-  // Longitudes wrap: bring lon into [lon0, lon0 + 360).
-  lon = std::fmod(lon - lon0_deg_, 360.0);
+  // Longitudes wrap: bring lon into [lon0, lon0 + 360). fmod returns an argument already in
+  // range unchanged, so it is only called for one that is not (it costs as much as the rest).
+  lon -= lon0_deg_;
+  if (!(lon >= 0.0 && lon < 360.0)) lon = std::fmod(lon, 360.0);
   if (lon < 0) lon += 360.0;
   const double col_f = lon / dlon_deg_;
   const int r0 = std::min(static_cast<int>(row_f), rows_ - 2);
   int c0 = static_cast<int>(col_f);
   const double tr = row_f - r0;
   double tc = col_f - c0;
-  // A global grid may or may not repeat its first column at 360 deg: wrap the column index.
-  const bool global = std::abs(dlon_deg_ * cols_ - 360.0) < 1e-9 || std::abs(dlon_deg_ * (cols_ - 1) - 360.0) < 1e-9;
-  if (c0 >= cols_ - 1 && !global) return std::nullopt;
-  const int wrap_cols = (std::abs(dlon_deg_ * (cols_ - 1) - 360.0) < 1e-9) ? cols_ - 1 : cols_;
-  c0 %= wrap_cols;
-  const int c1 = (c0 + 1) % wrap_cols;
+  if (c0 >= cols_ - 1 && !global_) return std::nullopt;
+  c0 %= wrap_cols_;
+  const int c1 = (c0 + 1) % wrap_cols_;
   const float v00 = node(r0, c0), v01 = node(r0, c1), v10 = node(r0 + 1, c0), v11 = node(r0 + 1, c1);
   for (float v : {v00, v01, v10, v11}) {
     if (std::abs(v - kGtxNoData) < 1e-3f) return std::nullopt;

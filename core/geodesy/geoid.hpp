@@ -29,6 +29,10 @@ class GeoidGrid {
  private:
   double lat0_deg_ = 0, lon0_deg_ = 0, dlat_deg_ = 0, dlon_deg_ = 0;
   int rows_ = 0, cols_ = 0;
+  // From the header, once: a global grid wraps its columns (with or without a repeated column at
+  // 360 deg, whose columns then wrap at cols - 1).
+  bool global_ = false;
+  int wrap_cols_ = 0;
   float node(int row, int col) const;  // the value at a node (rows from the south)
   std::shared_ptr<const std::uint8_t> file_;  // the whole GTX file, mapped read-only
   const std::uint8_t* nodes_ = nullptr;       // its big-endian float32 nodes, row by row
