@@ -27,10 +27,17 @@ std::int32_t to_scaled(double value, double lsb) {
 
 // Standard deviations of a NED-resolved diagonal covariance, re-resolved in the body frame:
 // sqrt(diag(C_bn diag(s^2) C_nb)). Axis sign flips (FRD -> FLU) do not change them.
+// Only the diagonal is formed: var_b(i) = sum_k C_bn(i, k)^2 s_k^2, C_bn's row i being C_nb's
+// column i.
 Eigen::Vector3d body_std_from_ned(const Eigen::Quaterniond& q_nb, const Eigen::Vector3d& std_ned) {
-  const Eigen::Matrix3d c_bn = q_nb.normalized().toRotationMatrix().transpose();
-  const Eigen::Matrix3d cov_b = c_bn * std_ned.cwiseAbs2().asDiagonal() * c_bn.transpose();
-  return cov_b.diagonal().cwiseMax(0.0).cwiseSqrt();
+  const Eigen::Matrix3d c_nb = q_nb.normalized().toRotationMatrix();
+  const Eigen::Vector3d var_ned = std_ned.cwiseAbs2();
+  Eigen::Vector3d var_b;
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector3d row = c_nb.col(i);
+    var_b(i) = (row(0) * var_ned(0)) * row(0) + (row(1) * var_ned(1)) * row(1) + (row(2) * var_ned(2)) * row(2);
+  }
+  return var_b.cwiseMax(0.0).cwiseSqrt();
 }
 
 std::uint8_t gear_of(Gear g) { return static_cast<std::uint8_t>(g); }

@@ -323,6 +323,41 @@ TEST(FeConventions, PoseAnglesAgainstHandDerivedValues) {
   EXPECT_NEAR(nose.z(), std::sin(10 * kDegToRad), 1e-12);
 }
 
+TEST(FeConventions, BodyStdsAreTheNedVariancesTurnedIntoTheBody) {
+  // Heading 90 deg (nose east), level: body x = east, y = south, z = down, so the body stds are
+  // the east, north and down stds.
+  NavSolution s;
+  s.header = gps_header(kT0, NavSolution::kValidAttitude | NavSolution::kValidHeading | NavSolution::kValidVelocity |
+                                 NavSolution::kValidVelocityStd | NavSolution::kValidPosition |
+                                 NavSolution::kValidPositionStd);
+  s.mode = NavMode::kNavigation;
+  s.rpy_rad = Eigen::Vector3d(0, 0, 90) * kDegToRad;
+  s.q_nb = rot::quat_from_rpy(s.rpy_rad);
+  s.vel_std_ned_mps = {0.1, 0.2, 0.3};
+  s.pos_std_ned_m = {1.0, 2.0, 4.0};
+  PoseMessage p = pose_from(s);
+  EXPECT_NEAR(p.velocity_std_body_mps[0], 0.2, 1e-6);
+  EXPECT_NEAR(p.velocity_std_body_mps[1], 0.1, 1e-6);
+  EXPECT_NEAR(p.velocity_std_body_mps[2], 0.3, 1e-6);
+  PoseAuxMessage aux = pose_aux_from(s);
+  EXPECT_NEAR(aux.position_std_body_m[0], 2.0, 1e-6);
+  EXPECT_NEAR(aux.position_std_body_m[1], 1.0, 1e-6);
+  EXPECT_NEAR(aux.position_std_body_m[2], 4.0, 1e-6);
+
+  // Any attitude: the diagonal of C_bn diag(s^2) C_nb, formed here as the full product.
+  s.rpy_rad = Eigen::Vector3d(-20, 35, 130) * kDegToRad;
+  s.q_nb = rot::quat_from_rpy(s.rpy_rad);
+  const Eigen::Matrix3d c_bn = s.q_nb.toRotationMatrix().transpose();
+  const Eigen::Vector3d vel_b = (c_bn * s.vel_std_ned_mps.cwiseAbs2().asDiagonal() * c_bn.transpose()).diagonal().cwiseSqrt();
+  const Eigen::Vector3d pos_b = (c_bn * s.pos_std_ned_m.cwiseAbs2().asDiagonal() * c_bn.transpose()).diagonal().cwiseSqrt();
+  p = pose_from(s);
+  aux = pose_aux_from(s);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(p.velocity_std_body_mps[static_cast<std::size_t>(i)], vel_b(i), 1e-6) << i;
+    EXPECT_NEAR(aux.position_std_body_m[static_cast<std::size_t>(i)], pos_b(i), 1e-6) << i;
+  }
+}
+
 TEST(FeConventions, UndulationFromEgm96OrInvalid) {
   NavSolution s;
   s.header = gps_header(kT0, NavSolution::kValidPosition);
