@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 
 #include "core/measurements/imu_increments.hpp"
@@ -12,17 +13,39 @@ namespace {
 
 constexpr double kNsPerS = 1e9;
 
-// The smoothed point at `time_ns`, if one lies within `tolerance_ns` (the smoother reports every
-// IMU sample it smoothed).
-const TrajectoryPoint* trajectory_at(const std::vector<TrajectoryPoint>& traj, std::int64_t time_ns,
-                                     std::int64_t tolerance_ns) {
+// The smoothed trajectory at `time_ns`: interpolated between the two points around it (position
+// and velocity linearly, attitude by slerp) when both lie within `tolerance_ns`, else the nearer
+// one within it, else nothing. Interpolated, a read moves continuously with the time asked for:
+// a pass's offset (which sets the times read, plan_epochs) then changes its starting states and
+// knowns by as much as the vehicle moved, not by whole samples. Read at the nearest sample
+// instead, the knowns' window (+-0.125 s, a sample and a half at 100 Hz... exactly half a
+// sample off the grid) jumped by a whole sample between offsets 2 ms apart, and the offset it
+// gave by 4 ms (parking_drive, seed 1: the passes alternated between -126.1 and -122.0 ms).
+std::optional<TrajectoryPoint> trajectory_at(const std::vector<TrajectoryPoint>& traj, std::int64_t time_ns,
+                                             std::int64_t tolerance_ns) {
   const auto it = std::lower_bound(traj.begin(), traj.end(), time_ns,
                                    [](const TrajectoryPoint& p, std::int64_t t) { return p.time_ns < t; });
-  const TrajectoryPoint* best = nullptr;
-  if (it != traj.end()) best = &*it;
-  if (it != traj.begin() && (best == nullptr || time_ns - (it - 1)->time_ns < best->time_ns - time_ns)) best = &*(it - 1);
-  if (best == nullptr || std::llabs(best->time_ns - time_ns) > tolerance_ns) return nullptr;
-  return best;
+  const TrajectoryPoint* after = it != traj.end() ? &*it : nullptr;
+  const TrajectoryPoint* before = it != traj.begin() ? &*(it - 1) : nullptr;
+  if (after != nullptr && after->time_ns == time_ns) return *after;
+  const bool after_near = after != nullptr && after->time_ns - time_ns <= tolerance_ns;
+  const bool before_near = before != nullptr && time_ns - before->time_ns <= tolerance_ns;
+  if (after_near && before_near) {
+    const double f = static_cast<double>(time_ns - before->time_ns) / static_cast<double>(after->time_ns - before->time_ns);
+    TrajectoryPoint p;
+    p.time_ns = time_ns;
+    p.lat_rad = before->lat_rad + f * (after->lat_rad - before->lat_rad);
+    p.lon_rad = before->lon_rad + f * (after->lon_rad - before->lon_rad);
+    p.height_m = before->height_m + f * (after->height_m - before->height_m);
+    p.vel_ned_mps = before->vel_ned_mps + f * (after->vel_ned_mps - before->vel_ned_mps);
+    p.q_nv = before->q_nv.slerp(f, after->q_nv);
+    p.gyro_bias_v_rps = before->gyro_bias_v_rps + f * (after->gyro_bias_v_rps - before->gyro_bias_v_rps);
+    p.accel_bias_v_mps2 = before->accel_bias_v_mps2 + f * (after->accel_bias_v_mps2 - before->accel_bias_v_mps2);
+    return p;
+  }
+  if (after_near && (!before_near || after->time_ns - time_ns <= time_ns - before->time_ns)) return *after;
+  if (before_near) return *before;
+  return std::nullopt;
 }
 
 }  // namespace
@@ -83,7 +106,7 @@ EpochPlan plan_epochs(const CalibrationLog& log, const CalibrationSetup& setup, 
   std::set<std::size_t> chosen;
   const auto anchor_at = [&](std::int64_t fix_time_ns) {
     const std::size_t i = nearest_imu(log.imu, fix_time_ns - offset_ns);
-    if (traj_at(log.imu[i].header.time_ns, tolerance_ns) != nullptr) chosen.insert(i);
+    if (traj_at(log.imu[i].header.time_ns, tolerance_ns)) chosen.insert(i);
   };
   for (const GnssPosition& fix : log.positions) anchor_at(fix.header.time_ns);
   for (const ExternalPosition& fix : log.external_positions) anchor_at(fix.header.time_ns);
@@ -96,7 +119,7 @@ EpochPlan plan_epochs(const CalibrationLog& log, const CalibrationSetup& setup, 
       const std::int64_t t = log.imu[i].header.time_ns;
       if (t - log.imu[i - 1].header.time_ns > gap_ns) last = t;  // a new chain starts here
       if (t - last >= spacing_ns && log.imu[base[k]].header.time_ns - t >= spacing_ns / 2 &&
-          traj_at(t, tolerance_ns) != nullptr) {
+          traj_at(t, tolerance_ns)) {
         chosen.insert(i);
         last = t;
       }
@@ -115,7 +138,7 @@ EpochPlan plan_epochs(const CalibrationLog& log, const CalibrationSetup& setup, 
 
   std::size_t previous = 0;
   for (const std::size_t i : chosen) {
-    const TrajectoryPoint* tp = traj_at(log.imu[i].header.time_ns, tolerance_ns);
+    const std::optional<TrajectoryPoint> tp = traj_at(log.imu[i].header.time_ns, tolerance_ns);
     Epoch e;
     e.imu_index = i;
     e.time_ns = log.imu[i].header.time_ns;
@@ -134,9 +157,9 @@ EpochPlan plan_epochs(const CalibrationLog& log, const CalibrationSetup& setup, 
     // noise on a car, imu_white_noise.hpp) into the first-order time shifts as a noisy regressor,
     // which biases the offset towards zero (errors in variables). Over 0.25 s that noise falls
     // by sqrt(25) at 100 Hz, while a central difference is exact up to the jerk's change.
-    const TrajectoryPoint* behind = traj_at(e.time_ns - half_window_ns, tolerance_ns);
-    const TrajectoryPoint* ahead = traj_at(e.time_ns + half_window_ns, tolerance_ns);
-    if (half_window_ns > 0 && behind != nullptr && ahead != nullptr && ahead->time_ns > behind->time_ns) {
+    const std::optional<TrajectoryPoint> behind = traj_at(e.time_ns - half_window_ns, tolerance_ns);
+    const std::optional<TrajectoryPoint> ahead = traj_at(e.time_ns + half_window_ns, tolerance_ns);
+    if (half_window_ns > 0 && behind && ahead && ahead->time_ns > behind->time_ns) {
       const double span_s = static_cast<double>(ahead->time_ns - behind->time_ns) / kNsPerS;
       struct Tangent {
         Eigen::Matrix3d c_ts;

@@ -495,18 +495,17 @@ CalibrationResult calibrate(const CalibrationLog& log, const CalibrationOptions&
   // the epochs turn it into the sensor's); the residual found so far is carried instead.
   CalibrationSetup setup = log.setup;
   Eigen::Vector2d mount_residual_rad = Eigen::Vector2d::Zero();
-  // The passes so far. Under vibration a pass's estimate depends on the offset it was
-  // linearised about, and more than one for one: on parking_drive (seed 1, second round) a pass
-  // from -124.4 ms gave -126.1, one from -126.1 gave -122.0, and the passes alternated between
-  // the two until the pass limit (why so strongly is not known: the knowns and the starting
-  // states are read at that offset, the pairing of fixes with samples was the same). A pass
-  // whose epochs pair the fixes as an earlier one's did (with the same IMU weights) therefore
-  // ends the loop: of the passes since that one, the one whose estimate lies nearest the offset
-  // it was linearised about, the most nearly consistent, is kept.
+  // The passes so far, each the estimate f(x) of a pass placed at offset x. The epochs' states and
+  // knowns are read at x (interpolated: calibration_epochs.cpp), so within one pairing of fixes
+  // with samples f is continuous and the passes iterate towards the consistent offset, f(x) = x:
+  // on parking_drive f moves by ~0.1-0.4 ms per ms of x there. A pass that pairs the fixes as an
+  // earlier one did without moving less than the pass before it is no longer getting there (two
+  // pairings taking turns): the loop ends with the most nearly consistent pass (|f(x) - x| least)
+  // since the earlier one.
   struct Pass {
     std::uint64_t placement;
     double noise_scale;
-    double placed_at_s;
+    double moved_s;  // |f(x) - x|
     CalibrationResult result;
   };
   std::vector<Pass> passes;
@@ -515,18 +514,19 @@ CalibrationResult calibrate(const CalibrationLog& log, const CalibrationOptions&
     std::uint64_t placement = 0;
     result = solve_once(log, setup, mount_residual_rad, options, placement);
     if (result.iterations == 0 || !result.converged) break;
-    const auto seen = std::find_if(passes.begin(), passes.end(), [&](const Pass& p) {
-      return p.placement == placement && p.noise_scale == setup.imu_noise_scale;
-    });
-    if (seen != passes.end()) {
-      const auto inconsistency = [](const Pass& p) { return std::abs(p.result.imu_time_offset_s.value - p.placed_at_s); };
-      result = std::min_element(seen, passes.end(), [&](const Pass& a, const Pass& b) {
-                 return inconsistency(a) < inconsistency(b);
-               })->result;
+    const double moved_s = std::abs(result.imu_time_offset_s.value - setup.imu_time_offset_s);
+    const auto seen = static_cast<std::size_t>(
+        std::find_if(passes.begin(), passes.end(),
+                     [&](const Pass& p) { return p.placement == placement && p.noise_scale == setup.imu_noise_scale; }) -
+        passes.begin());
+    const bool contracting = !passes.empty() && moved_s < passes.back().moved_s;
+    passes.push_back({placement, setup.imu_noise_scale, moved_s, result});
+    if (seen + 1 < passes.size() && !contracting && moved_s >= options.offset_tolerance_s) {
+      result = std::min_element(passes.begin() + static_cast<std::ptrdiff_t>(seen), passes.end(),
+                                [](const Pass& a, const Pass& b) { return a.moved_s < b.moved_s; })
+                   ->result;
       break;
     }
-    passes.push_back({placement, setup.imu_noise_scale, setup.imu_time_offset_s, result});
-    const double moved_s = std::abs(result.imu_time_offset_s.value - setup.imu_time_offset_s);
     setup.imu_time_offset_s = result.imu_time_offset_s.value;
     setup.gnss_lever_arm_m = result.gnss_lever_arm_m.value;
     setup.nhc_lever_arm_m = result.nhc_lever_arm_m.value;

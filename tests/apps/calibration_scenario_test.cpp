@@ -114,13 +114,12 @@ TEST(CalibrationScenario, SmoothRecoversTheSimulatedInstallation) {
 // and no time offset; the calibration must find the 125 ms within 5 ms. One round stops short
 // (-119.2 ms, 2026-11-24: the smoothed trajectory it starts from was made with the offset
 // missing, heading 2 deg RMS off; before the IMU noise re-weighting, -98.9 ms); the second, from
-// the first round's installation, gets there (-127.3 +- 1.1 ms; -129.3 +- 1.2 with the biases in
-// 10 s segments, 2026-11-29).
-// The std dev is not asserted to cover the error: under this drive's vibration it does not, with
-// either bias model. Six draws (seeds 27, 1-5, two rounds, 2026-11-29) were off by -4.3, 11.6,
-// -1.6, -3.8, 0.0, 6.9 ms with segments and -2.4, 15.1, -1.4, -3.4, 0.8, 6.3 ms with one bias, at
-// std devs of 1.1-1.3 ms; from the truth as starting trajectory seeds 27, 1, 5 were off by -1.5,
-// 16.0, 7.6 ms, and without the vibration by -0.8, 0.9, 0.7 ms at std 0.7 (README, calibration).
+// the first round's installation, gets there (-128.6 +- 3.2 ms, 2026-11-29).
+// Six draws (seeds 27, 1-5, two rounds, 2026-11-29) are off by -3.6, +0.8, +3.0, -0.2, -0.2, +0.7 ms
+// at std devs of 3.1 ms, with the IMU's white noise measured from its samples and the trajectory
+// read continuously at each pass's offset (README, calibration); before those, -4.3, 11.6, -1.6,
+// -3.8, 0.0, 6.9 ms at 1.1-1.3 ms, the std devs covering nothing. Without the vibration -0.8-0.9 ms
+// at 0.8 ms. The std dev is now held to cover the error within three of it.
 TEST(CalibrationScenario, TheParkingDrivesImuOffsetIsFoundInTwoRounds) {
   set_calibration_solver([](const calib::CalibrationLog& log) { return calib::calibrate(log); });
   const std::filesystem::path dir = testing::scratch_dir();
@@ -145,6 +144,7 @@ TEST(CalibrationScenario, TheParkingDrivesImuOffsetIsFoundInTwoRounds) {
   const double error_ms = offset_error_ms(2, &std_ms);
   EXPECT_LT(std::abs(error_ms), 5.0);
   EXPECT_GT(std_ms, 0.0);
+  EXPECT_LT(std::abs(error_ms), 3.0 * std_ms);
 }
 
 // The same drive (another draw: seed 31) with positions only from the receiver (an RTKLIB .pos
