@@ -31,7 +31,8 @@ std::optional<TrajectoryPoint> trajectory_at(const std::vector<TrajectoryPoint>&
   const bool after_near = after != nullptr && after->time_ns - time_ns <= tolerance_ns;
   const bool before_near = before != nullptr && time_ns - before->time_ns <= tolerance_ns;
   if (after_near && before_near) {
-    const double f = static_cast<double>(time_ns - before->time_ns) / static_cast<double>(after->time_ns - before->time_ns);
+    const double f =
+        static_cast<double>(time_ns - before->time_ns) / static_cast<double>(after->time_ns - before->time_ns);
     TrajectoryPoint p;
     p.time_ns = time_ns;
     p.lat_rad = before->lat_rad + f * (after->lat_rad - before->lat_rad);

@@ -515,10 +515,10 @@ CalibrationResult calibrate(const CalibrationLog& log, const CalibrationOptions&
     result = solve_once(log, setup, mount_residual_rad, options, placement);
     if (result.iterations == 0 || !result.converged) break;
     const double moved_s = std::abs(result.imu_time_offset_s.value - setup.imu_time_offset_s);
-    const auto seen = static_cast<std::size_t>(
-        std::find_if(passes.begin(), passes.end(),
-                     [&](const Pass& p) { return p.placement == placement && p.noise_scale == setup.imu_noise_scale; }) -
-        passes.begin());
+    const auto same_pairing = [&](const Pass& p) {
+      return p.placement == placement && p.noise_scale == setup.imu_noise_scale;
+    };
+    const auto seen = static_cast<std::size_t>(std::find_if(passes.begin(), passes.end(), same_pairing) - passes.begin());
     const bool contracting = !passes.empty() && moved_s < passes.back().moved_s;
     passes.push_back({placement, setup.imu_noise_scale, moved_s, result});
     if (seen + 1 < passes.size() && !contracting && moved_s >= options.offset_tolerance_s) {

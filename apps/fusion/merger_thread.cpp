@@ -60,8 +60,8 @@ const Measurement* MergerThread::next() {
   constexpr std::size_t kAhead = 4;
   if (position_ + kAhead < batch_.size()) {
     const Measurement* ahead = &batch_[position_ + kAhead];
-    cpu::prefetch_for_read(ahead, 2 * cpu::kCacheLineBytes);
-    cpu::prefetch_for_read(reinterpret_cast<const char*>(ahead + 1) - 1, 1);
+    cpu::prefetch<cpu::Intent::kRead>(ahead, 2 * cpu::kCacheLineBytes);
+    cpu::prefetch<cpu::Intent::kRead>(reinterpret_cast<const char*>(ahead + 1) - 1, 1);
   }
   return &batch_[position_++];
 }

@@ -36,7 +36,9 @@ OutputEpoch& PoseOutputThread::next_slot() {
   // The slot two ahead was last read by the writer thread, on the other core: ask for the part
   // the filter thread writes (the captured solution inputs) before it gets there.
   const std::size_t ahead = (next_slot_ + 2) % kSlots;
-  if (ahead < slots_.size()) cpu::prefetch_for_write(&slots_[ahead].solution_inputs, sizeof(filter::SolutionInputs));
+  if (ahead < slots_.size()) {
+    cpu::prefetch<cpu::Intent::kWrite>(&slots_[ahead].solution_inputs, sizeof(filter::SolutionInputs));
+  }
   return slots_[next_slot_];
 }
 

@@ -14,21 +14,14 @@ namespace navfuse::cpu {
 
 inline constexpr std::size_t kCacheLineBytes = 64;
 
-// Every cache line of [p, p + bytes) towards this core's cache, for reading or for writing.
-inline void prefetch_for_read(const void* p, std::size_t bytes) {
-#if defined(__GNUC__)
-  const char* c = static_cast<const char*>(p);
-  for (std::size_t b = 0; b < bytes; b += kCacheLineBytes) __builtin_prefetch(c + b, 0);
-#else
-  (void)p;
-  (void)bytes;
-#endif
-}
+enum class Intent { kRead = 0, kWrite = 1 };
 
-inline void prefetch_for_write(const void* p, std::size_t bytes) {
+// Every cache line of [p, p + bytes) towards this core's cache, to be read or written.
+template <Intent kIntent>
+inline void prefetch(const void* p, std::size_t bytes) {
 #if defined(__GNUC__)
   const char* c = static_cast<const char*>(p);
-  for (std::size_t b = 0; b < bytes; b += kCacheLineBytes) __builtin_prefetch(c + b, 1);
+  for (std::size_t b = 0; b < bytes; b += kCacheLineBytes) __builtin_prefetch(c + b, static_cast<int>(kIntent));
 #else
   (void)p;
   (void)bytes;

@@ -74,34 +74,25 @@ with open(f"{work}/drive.jsonl") as src, open(f"{work}/imu.txt", "w") as imu, op
 with open(f"{work}/truth.csv") as t:
     first = next(csv.DictReader(t))
 start = float(first["time_gps_s"]) % 604800
+# KF-GINS' keys (its src/kf_gins.cpp loadConfig): three values per axis, its units.
+axes = lambda *v: "[ " + ", ".join(str(x) for x in (v if len(v) == 3 else v * 3)) + " ]"
+keys = {
+    "imupath": f'"{work}/imu.txt"', "gnsspath": f'"{work}/gnss.txt"', "outputpath": f'"{work}/kf_out"',
+    "imudatalen": 7, "imudatarate": 200, "starttime": f"{start:.3f}", "endtime": -1,
+    "initpos": axes(first["lat_deg"], first["lon_deg"], first["height_m"]),
+    "initvel": axes(first["vn"], first["ve"], first["vd"]),
+    "initatt": axes(first["roll_deg"], first["pitch_deg"], first["yaw_deg"]),
+    "initgyrbias": axes(0), "initaccbias": axes(0), "initgyrscale": axes(0), "initaccscale": axes(0),
+    "initposstd": axes(0.1, 0.1, 0.2), "initvelstd": axes(0.05), "initattstd": axes(0.5, 0.5, 1.0),
+}
+# The simulated industrial IMU: deg/sqrt(h), m/s/sqrt(h), deg/h, mGal (5 mg), ppm, hours.
+noise = {"arw": axes(0.1), "vrw": axes(0.03), "gbstd": axes(20.0), "abstd": axes(5000.0),
+         "gsstd": axes(300.0), "asstd": axes(300.0), "corrtime": 1.0}
 with open(f"{work}/kf.yaml", "w") as y:
-    y.write(f"""imupath: "{work}/imu.txt"
-gnsspath: "{work}/gnss.txt"
-outputpath: "{work}/kf_out"
-imudatalen: 7
-imudatarate: 200
-starttime: {start:.3f}
-endtime: -1
-initpos: [ {first['lat_deg']}, {first['lon_deg']}, {first['height_m']} ]
-initvel: [ {first['vn']}, {first['ve']}, {first['vd']} ]
-initatt: [ {first['roll_deg']}, {first['pitch_deg']}, {first['yaw_deg']} ]
-initgyrbias: [ 0, 0, 0 ]
-initaccbias: [ 0, 0, 0 ]
-initgyrscale: [ 0, 0, 0 ]
-initaccscale: [ 0, 0, 0 ]
-initposstd: [ 0.1, 0.1, 0.2 ]
-initvelstd: [ 0.05, 0.05, 0.05 ]
-initattstd: [ 0.5, 0.5, 1.0 ]
-imunoise:
-  arw: [ 0.1, 0.1, 0.1 ]
-  vrw: [ 0.03, 0.03, 0.03 ]
-  gbstd: [ 20.0, 20.0, 20.0 ]
-  abstd: [ 5000.0, 5000.0, 5000.0 ]
-  gsstd: [ 300.0, 300.0, 300.0 ]
-  asstd: [ 300.0, 300.0, 300.0 ]
-  corrtime: 1.0
-antlever: [ 0.8, -0.4, -1.3 ]
-""")
+    y.writelines(f"{k}: {v}\n" for k, v in keys.items())
+    y.write("imunoise:\n")
+    y.writelines(f"  {k}: {v}\n" for k, v in noise.items())
+    y.write(f"antlever: {axes(0.8, -0.4, -1.3)}\n")
 PY
 
 for i in $(seq "$RUNS"); do

@@ -348,8 +348,11 @@ TEST(FeConventions, BodyStdsAreTheNedVariancesTurnedIntoTheBody) {
   s.rpy_rad = Eigen::Vector3d(-20, 35, 130) * kDegToRad;
   s.q_nb = rot::quat_from_rpy(s.rpy_rad);
   const Eigen::Matrix3d c_bn = s.q_nb.toRotationMatrix().transpose();
-  const Eigen::Vector3d vel_b = (c_bn * s.vel_std_ned_mps.cwiseAbs2().asDiagonal() * c_bn.transpose()).diagonal().cwiseSqrt();
-  const Eigen::Vector3d pos_b = (c_bn * s.pos_std_ned_m.cwiseAbs2().asDiagonal() * c_bn.transpose()).diagonal().cwiseSqrt();
+  const auto body_std = [&](const Eigen::Vector3d& std_ned) -> Eigen::Vector3d {
+    return (c_bn * std_ned.cwiseAbs2().asDiagonal() * c_bn.transpose()).diagonal().cwiseSqrt();
+  };
+  const Eigen::Vector3d vel_b = body_std(s.vel_std_ned_mps);
+  const Eigen::Vector3d pos_b = body_std(s.pos_std_ned_m);
   p = pose_from(s);
   aux = pose_aux_from(s);
   for (int i = 0; i < 3; ++i) {
