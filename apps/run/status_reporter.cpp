@@ -1,5 +1,7 @@
 #include "apps/run/status_reporter.hpp"
 
+#include <algorithm>
+
 namespace navfuse::apps {
 namespace {
 
@@ -10,6 +12,21 @@ void add_rejection(navfuse::status_t& s, std::string kind, std::string reason, s
   r.reason = std::move(reason);
   r.count = static_cast<std::int64_t>(count);
   s.rejections.push_back(std::move(r));
+}
+
+// One entry of innovations[], for a kind with at least one update tried.
+void add_innovation(navfuse::status_t& s, std::string kind, const filter::InnovationStats& stats,
+                    std::uint64_t accepted, std::uint64_t rejected) {
+  if (stats.count == 0) return;
+  navfuse::innovation_t i;
+  i.kind = std::move(kind);
+  i.count = static_cast<std::int64_t>(stats.count);
+  i.accepted = static_cast<std::int64_t>(accepted);
+  i.rejected = static_cast<std::int64_t>(rejected);
+  i.mean_nis = static_cast<float>(stats.mean_nis());
+  i.mean_nis_per_dim = static_cast<float>(stats.mean_nis_per_dim());
+  i.fraction_above_gate = static_cast<float>(stats.fraction_above_gate());
+  s.innovations.push_back(std::move(i));
 }
 
 }  // namespace
@@ -46,17 +63,13 @@ navfuse::status_t StatusReporter::make(const StatusInputs& in, std::int64_t now_
   }
   for (std::size_t k = 0; k < in.filter.kinds.size(); ++k) {
     const filter::KindStats& ks = in.filter.kinds[k];
-    if (ks.innovation.count == 0) continue;
-    navfuse::innovation_t i;
-    i.kind = std::string(to_string(static_cast<MeasurementKind>(k)));
-    i.count = static_cast<std::int64_t>(ks.innovation.count);
-    i.accepted = static_cast<std::int64_t>(ks.used);
-    i.rejected = static_cast<std::int64_t>(ks.rejected_total());
-    i.mean_nis = static_cast<float>(ks.innovation.mean_nis());
-    i.mean_nis_per_dim = static_cast<float>(ks.innovation.mean_nis_per_dim());
-    i.fraction_above_gate = static_cast<float>(ks.innovation.fraction_above_gate());
-    s.innovations.push_back(std::move(i));
+    add_innovation(s, std::string(to_string(static_cast<MeasurementKind>(k))), ks.innovation, ks.used,
+                   ks.rejected_total());
   }
+  // The non-holonomic constraint, as --summary-json's constraints.nhc: its updates tried are
+  // either applied or gated.
+  const filter::InnovationStats& nhc = in.filter.nhc_innovation;
+  add_innovation(s, kNhcInnovationKind, nhc, in.filter.nhc_updates, nhc.count - std::min(nhc.count, in.filter.nhc_updates));
   s.num_innovations = static_cast<std::int16_t>(s.innovations.size());
   add_rejection(s, "all", "queue_full", in.rejected_queue_full);
   add_rejection(s, "all", "time_base", in.rejected_time_base);

@@ -1,7 +1,8 @@
 // NAVFUSE_STATUS carries the per-kind innovation statistics as real LCM traffic: `navfuse run` on
 // the bundled VN-300 drive publishes its final status when the input ends; its `innovations[]`
 // must say, kind by kind, what the same run's --summary-json says (an independent encoder of the
-// same counts), and GNSS positions must have been tried.
+// same counts), and GNSS positions must have been tried; the non-holonomic constraint's are listed
+// as kind "nhc", as its constraints.nhc.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -50,10 +51,23 @@ TEST_F(RunStatusInnovationsTest, FinalStatusHasTheSummaryInnovationStatistics) {
   for (const auto& [kind, m] : summary["measurements"].items()) {
     if (m.contains("innovation")) ++listed_in_summary;
   }
-  EXPECT_EQ(last.num_innovations, listed_in_summary);
-  bool gnss_position = false;
+  // The demo is a land vehicle: its non-holonomic constraint is listed too, as kind "nhc".
+  ASSERT_TRUE(summary.contains("constraints")) << summary.dump();
+  const auto& nhc = summary["constraints"]["nhc"];
+  EXPECT_EQ(last.num_innovations, listed_in_summary + 1);
+  bool gnss_position = false, nhc_listed = false;
   for (const navfuse::innovation_t& i : last.innovations) {
     SCOPED_TRACE(i.kind);
+    if (i.kind == "nhc") {
+      nhc_listed = true;
+      EXPECT_EQ(i.count, nhc["count"].get<std::int64_t>());
+      EXPECT_EQ(i.accepted, nhc["updates"].get<std::int64_t>());
+      EXPECT_EQ(i.rejected, i.count - i.accepted);
+      EXPECT_GT(i.accepted, 100);  // minutes of driving at 10 Hz
+      EXPECT_FLOAT_EQ(i.mean_nis_per_dim, nhc["mean_nis_per_dim"].get<float>());
+      EXPECT_FLOAT_EQ(i.fraction_above_gate, nhc["fraction_above_gate"].get<float>());
+      continue;
+    }
     const auto& m = summary["measurements"][i.kind];
     ASSERT_TRUE(m.contains("innovation")) << m.dump();
     const auto& in = m["innovation"];
@@ -71,6 +85,7 @@ TEST_F(RunStatusInnovationsTest, FinalStatusHasTheSummaryInnovationStatistics) {
     }
   }
   EXPECT_TRUE(gnss_position);
+  EXPECT_TRUE(nhc_listed);
 }
 
 }  // namespace
