@@ -18,9 +18,9 @@ constexpr double kNsPerS = 1e9;
 // one within it, else nothing. Interpolated, a read moves continuously with the time asked for:
 // a pass's offset (which sets the times read, plan_epochs) then changes its starting states and
 // knowns by as much as the vehicle moved, not by whole samples. Read at the nearest sample
-// instead, the knowns' window (+-0.125 s, a sample and a half at 100 Hz... exactly half a
-// sample off the grid) jumped by a whole sample between offsets 2 ms apart, and the offset it
-// gave by 4 ms (parking_drive, seed 1: the passes alternated between -126.1 and -122.0 ms).
+// instead, the knowns' window (+-0.125 s: 12.5 samples at 100 Hz, both ends midway between two)
+// jumped by a whole sample between offsets 2 ms apart, and the offset it gave by 4 ms
+// (parking_drive, seed 1: the passes alternated between -126.1 and -122.0 ms).
 std::optional<TrajectoryPoint> trajectory_at(const std::vector<TrajectoryPoint>& traj, std::int64_t time_ns,
                                              std::int64_t tolerance_ns) {
   const auto it = std::lower_bound(traj.begin(), traj.end(), time_ns,

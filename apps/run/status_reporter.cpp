@@ -69,7 +69,8 @@ navfuse::status_t StatusReporter::make(const StatusInputs& in, std::int64_t now_
   // The non-holonomic constraint, as --summary-json's constraints.nhc: its updates tried are
   // either applied or gated.
   const filter::InnovationStats& nhc = in.filter.nhc_innovation;
-  add_innovation(s, kNhcInnovationKind, nhc, in.filter.nhc_updates, nhc.count - std::min(nhc.count, in.filter.nhc_updates));
+  const std::uint64_t nhc_applied = std::min(nhc.count, in.filter.nhc_updates);
+  add_innovation(s, kNhcInnovationKind, nhc, nhc_applied, nhc.count - nhc_applied);
   s.num_innovations = static_cast<std::int16_t>(s.innovations.size());
   add_rejection(s, "all", "queue_full", in.rejected_queue_full);
   add_rejection(s, "all", "time_base", in.rejected_time_base);

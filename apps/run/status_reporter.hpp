@@ -1,7 +1,8 @@
 // NAVFUSE_STATUS (about once a second): filter mode and health flags, per-input byte and frame
 // rates with bad frames and reconnects, rejections by measurement kind and reason, per-kind
 // innovation statistics (updates tried, accepted, rejected, mean NIS, fraction above the gate;
-// the non-holonomic constraint's under kind "nhc"), output drops, and the IMU-arrival-to-pose-publication latency (p50/p99) over the last interval.
+// the non-holonomic constraint's under kind "nhc"), output drops, and the IMU-arrival-to-pose-
+// publication latency (p50/p99) over the last interval.
 #pragma once
 
 #include <cstdint>
