@@ -172,13 +172,6 @@ const Measurement* MeasurementMerger::next() {
   return &s.queue[s.head++];
 }
 
-bool MeasurementMerger::next(Measurement& out) {
-  const Measurement* m = next();
-  if (m == nullptr) return false;
-  out = *m;
-  return true;
-}
-
 std::vector<InputSummary> MeasurementMerger::input_summaries() const {
   std::vector<InputSummary> v;
   for (const auto& s : streams_) {

@@ -51,8 +51,6 @@ class MeasurementMerger {
   // queue: no copy); nullptr once every input is exhausted. Throws CommandError on a read error
   // or (unless allowed) a truncated input.
   const Measurement* next();
-  // The same, copied into `out`; false once every input is exhausted.
-  bool next(Measurement& out);
 
   // Per input: path, format and the decoder's counters (final after next() returned false).
   std::vector<InputSummary> input_summaries() const;

@@ -22,13 +22,9 @@
 # repository into its scratch folder. KF-GINS is built here from its five sources with -O3
 # -DNDEBUG against Debian's Eigen, yaml-cpp and abseil (apt-get install libabsl-dev); the script
 # prints "skipped" when any of that is missing (no network, no abseil).
-set -euo pipefail
-BUILD_DIR=${1:-build/release}
-RUNS=${2:-9}
-NAVFUSE="$BUILD_DIR/apps/navfuse"
-[ -x "$NAVFUSE" ] || { echo "kfgins_compare: $NAVFUSE not found (build first)" >&2; exit 1; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+BENCH_NAME=kfgins_compare
+DEFAULT_RUNS=9
+source "$(dirname "$0")/whole_process_setup.sh"
 
 kf=${KF_GINS_DIR:-$work/KF-GINS}
 if [ -z "${KF_GINS_DIR:-}" ] &&

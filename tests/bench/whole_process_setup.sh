@@ -1,4 +1,5 @@
-# Sourced by the whole-process benchmark scripts (replay_throughput.sh, smooth_throughput.sh):
+# Sourced by the whole-process benchmark scripts (replay_throughput.sh, smooth_throughput.sh,
+# kfgins_compare.sh):
 # their arguments [BUILD_DIR] [RUNS], the navfuse binary, /usr/bin/time, a scratch folder removed
 # on exit. Set BENCH_NAME and DEFAULT_RUNS before sourcing; gives NAVFUSE, RUNS and work.
 set -euo pipefail
