@@ -102,21 +102,23 @@ void Engine::run_increment(const ImuRecord& record) {
 }
 
 void Engine::fuse_due(std::int64_t horizon_ns) {
-  // Entries stamped before the previous horizon are all applied already: by the fuse_due() that
-  // reached that horizon, on arrival (process_aiding), or dropped; replay_from() clears the flags
-  // only from the horizon it sets. So the scan starts there instead of at the ~1 s of fused
-  // entries kept for re-propagation (a walk over ~60 entries per IMU sample).
-  auto e = std::lower_bound(entries_.begin(), entries_.end(), previous_horizon_ns_,
+  // Entries stamped before the previous horizon are fused already (by the fuse_due() that reached
+  // that horizon, on arrival in process_aiding, or dropped), but for those from unfused_from_ns_
+  // on, un-fused by replay_from(). So the scan starts at the earlier of the two instead of at the
+  // ~1 s of fused entries kept for re-propagation (a walk over ~60 entries per IMU sample).
+  const std::int64_t from_ns = std::min(previous_horizon_ns_, unfused_from_ns_);
+  unfused_from_ns_ = INT64_MAX;
+  auto e = std::lower_bound(entries_.begin(), entries_.end(), from_ns,
                             [](const Entry& entry, std::int64_t t) { return entry.time_ns < t; });
   for (; e != entries_.end() && e->time_ns < horizon_ns; ++e) {
-    if (!e->applied) fuse_entry(*e);
+    if (!e->applied()) fuse_entry(*e);
   }
 }
 
 void Engine::fuse_entry(Entry& e) {
   const double shift_s = static_cast<double>(e.time_ns - core_.x.time_ns) * 1e-9;
   const FuseResult r = fuse_measurement(core_, options_, e.m, shift_s);
-  e.applied = true;
+  e.fused_order = ++fused_order_;
   if (!e.counted) {
     count(kind_of(e.m), r);
     if (innovation_sink_ != nullptr) innovation_sink_(innovation_context_, e.m, r);
@@ -137,7 +139,7 @@ void Engine::count(MeasurementKind kind, const FuseResult& r) {
 void Engine::maybe_checkpoint(const ImuRecord& record) {
   if (options_.max_latency_s <= 0.0) {
     // No re-propagation: fused measurements are never needed again.
-    while (!entries_.empty() && entries_.front().applied) entries_.erase(entries_.begin());
+    while (!entries_.empty() && entries_.front().applied()) entries_.erase(entries_.begin());
     return;
   }
   if (last_checkpoint_ns_ != INT64_MIN &&
@@ -145,12 +147,13 @@ void Engine::maybe_checkpoint(const ImuRecord& record) {
           options_.checkpoint_interval_s - 1e-9) {
     return;
   }
-  checkpoints_.push_back(Checkpoint{core_, record.horizon_ns, record.seq});
+  checkpoints_.push_back(Checkpoint{core_, record.horizon_ns, record.seq, fused_order_});
   last_checkpoint_ns_ = core_.x.time_ns;
-  // Measurements already inside the oldest snapshot can never be re-fused.
-  const std::int64_t oldest = checkpoints_.front().horizon_ns;
+  // Measurements already inside the oldest snapshot (fused before it was taken) can never be
+  // re-fused.
+  const std::uint64_t oldest = checkpoints_.front().fused_order;
   auto keep = std::find_if(entries_.begin(), entries_.end(),
-                           [&](const Entry& e) { return !(e.applied && e.time_ns < oldest); });
+                           [&](const Entry& e) { return !(e.applied() && e.fused_order <= oldest); });
   entries_.erase(entries_.begin(), keep);
 }
 
@@ -174,10 +177,17 @@ void Engine::process_aiding(const Measurement& m) {
   }
   auto pos = std::upper_bound(entries_.begin(), entries_.end(), t,
                               [](std::int64_t time, const Entry& e) { return time < e.time_ns; });
-  pos = entries_.insert(pos, Entry{m, t, false, false});
+  pos = entries_.insert(pos, Entry{m, t, 0, false});
   if (imu_seq_ == 0 || t >= latest_horizon_ns_) return;  // waits for the IMU to reach it
   if (t >= previous_horizon_ns_) {
     fuse_entry(*pos);
+    // A snapshot taken at this sample (maybe_checkpoint) is from before the entry, though the
+    // entry is stamped before its horizon: brought up to date, a re-propagation from it holds the
+    // entry fused where it was, as one that had come in time.
+    if (!checkpoints_.empty() && checkpoints_.back().seq == imu_seq_) {
+      checkpoints_.back().core = core_;
+      checkpoints_.back().fused_order = fused_order_;
+    }
     solution_dirty_ = true;
     return;
   }
@@ -193,7 +203,7 @@ void Engine::replay_from(std::int64_t t) {
                      imu_history_.front().seq <= checkpoints_[c - 1].seq + 1;
   if (!found) {
     auto it = std::find_if(entries_.begin(), entries_.end(),
-                           [&](const Entry& e) { return e.time_ns == t && !e.applied; });
+                           [&](const Entry& e) { return e.time_ns == t && !e.applied(); });
     if (it != entries_.end()) {
       count(kind_of(it->m), FuseResult::reject(RejectReason::kTooLate));
       entries_.erase(it);
@@ -203,11 +213,16 @@ void Engine::replay_from(std::int64_t t) {
   const Checkpoint& cp = checkpoints_[c - 1];
   const std::uint64_t from_seq = cp.seq;
   const std::int64_t from_horizon = cp.horizon_ns;
+  const std::uint64_t from_order = cp.fused_order;
   core_ = cp.core;
   last_checkpoint_ns_ = core_.x.time_ns;
   while (checkpoints_.size() > c) checkpoints_.pop_back();
+  // Everything fused after the snapshot is fused again: by time that is every entry from its
+  // horizon on, and also an older one fused later, which the snapshot does not hold either.
+  unfused_from_ns_ = INT64_MAX;
   for (Entry& e : entries_) {
-    if (e.time_ns >= from_horizon) e.applied = false;
+    if (e.fused_order > from_order) e.fused_order = 0;
+    if (!e.applied()) unfused_from_ns_ = std::min(unfused_from_ns_, e.time_ns);
   }
   latest_horizon_ns_ = from_horizon;
   const std::size_t first = static_cast<std::size_t>(from_seq + 1 - imu_history_.front().seq);
@@ -222,6 +237,7 @@ void Engine::forget_history() {
     if (!e.counted) count(kind_of(e.m), FuseResult::reject(RejectReason::kTimeGap));
   }
   entries_.clear();
+  unfused_from_ns_ = INT64_MAX;
   checkpoints_.clear();
   imu_history_.clear();
   last_checkpoint_ns_ = INT64_MIN;
@@ -289,6 +305,7 @@ void Engine::reset(std::uint32_t mask) {
   }
   // Snapshots from before the reset must not be replayed into it.
   entries_.clear();
+  unfused_from_ns_ = INT64_MAX;
   checkpoints_.clear();
   last_checkpoint_ns_ = INT64_MIN;
   solution_dirty_ = true;
@@ -303,6 +320,7 @@ void Engine::set_gnss_lever_arm(const Eigen::Vector3d& lever_arm_m, int antenna)
   core_.x.gnss_lever_arm_m = lever_arm_m;
   checkpoints_.clear();
   entries_.clear();
+  unfused_from_ns_ = INT64_MAX;
   last_checkpoint_ns_ = INT64_MIN;
 }
 

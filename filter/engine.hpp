@@ -130,12 +130,16 @@ class Engine {
     FilterCore core;
     std::int64_t horizon_ns = 0;
     std::uint64_t seq = 0;
+    std::uint64_t fused_order = 0;  // fused_order_ when the snapshot was taken
   };
   struct Entry {
     Measurement m;
     std::int64_t time_ns = 0;
-    bool applied = false;
+    // When it was fused, in the order of fusion (fused_order_), 0 while not: the snapshots hold
+    // exactly the entries fused before them, whatever their timestamps.
+    std::uint64_t fused_order = 0;
     bool counted = false;
+    bool applied() const { return fused_order != 0; }
   };
 
   void dispatch(MeasurementKind kind, const Measurement& m);
@@ -161,6 +165,10 @@ class Engine {
   std::int64_t latest_horizon_ns_ = INT64_MIN;
   std::int64_t previous_horizon_ns_ = INT64_MIN;
   std::int64_t last_checkpoint_ns_ = INT64_MIN;
+  std::uint64_t fused_order_ = 0;
+  // The oldest entry before previous_horizon_ns_ not yet fused (reset by a re-propagation);
+  // INT64_MAX when there is none. fuse_due() scans from it.
+  std::int64_t unfused_from_ns_ = INT64_MAX;
 
   RingBuffer<ImuRecord> imu_history_;
   RingBuffer<Checkpoint> checkpoints_;

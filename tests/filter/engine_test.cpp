@@ -202,6 +202,63 @@ TEST(Engine, LateMeasurementsGiveTheSameStateAsTimelyOnes) {
   EXPECT_LT((a.pos_std_ned_m - b.pos_std_ned_m).norm(), 1e-9);
 }
 
+TEST(Engine, AMeasurementFusedOnArrivalSurvivesALaterReplay) {
+  // A GNSS velocity stamped between two IMU samples and delivered just after the second is fused
+  // on arrival, at that sample, after the sample's snapshot was taken. A fix delivered 5 samples
+  // late then re-propagates from the newest snapshot before it, which can be that one: the
+  // velocity must not be lost (it was: the snapshot lacked it, and its timestamp, before the
+  // snapshot's horizon, kept it from being fused again; a fix delivered later re-propagates from
+  // an older snapshot and hid the loss). Velocities every 7th sample meet the snapshots' 20-sample spacing at
+  // every phase. Moving, so that no zero-velocity update hides what a velocity update does.
+  test::LineTrajectory traj({kLat, 0.1, 200.0}, Eigen::Vector3d(10.0, 0.0, 0.0), Eigen::Vector3d::Zero(), 200.0);
+  std::mt19937_64 rng(11);
+  std::vector<Measurement> reference, late;  // reference: in time, what `late` delivers
+  std::vector<std::pair<int, Measurement>> queue;  // (deliver after this many IMU samples, m)
+  const auto deliver = [&](int imu_count) {
+    for (auto it = queue.begin(); it != queue.end();) {
+      if (it->first > imu_count) {
+        ++it;
+        continue;
+      }
+      late.push_back(it->second);
+      it = queue.erase(it);
+    }
+  };
+  const int n = 20 * 200;
+  for (int k = 1; k <= n; ++k) {
+    const ImuSample imu = traj.next();
+    reference.emplace_back(imu);
+    late.emplace_back(imu);
+    deliver(k);
+    if (k % 7 == 0 && k < n) {
+      GnssVelocity v = test::make_velocity(traj.truth(), 0.05, &rng);
+      v.header.time_ns += 3'000'000;  // 0.6 of the 5 ms interval after the sample
+      reference.emplace_back(v);
+      queue.emplace_back(k + 1, v);
+    }
+    if (k % 40 == 0 && k + 5 <= n) {
+      const GnssPosition fix = test::make_fix(traj.truth(), Eigen::Vector3d::Zero(), 1.0, &rng);
+      reference.emplace_back(fix);
+      queue.emplace_back(k + 5, fix);
+    }
+  }
+  FilterOptions o;
+  o.initial_heading_rad = 0.0;
+  Engine a{o};
+  Engine b{o};
+  for (const Measurement& m : reference) a.process(m);
+  for (const Measurement& m : late) b.process(m);
+  ASSERT_EQ(b.solution().mode, NavMode::kNavigation);
+  EXPECT_GT(b.stats().replays, 50u);
+  const std::uint64_t velocities = a.stats().of(MeasurementKind::kGnssVelocity).used;
+  EXPECT_GT(velocities, 500u);
+  EXPECT_EQ(b.stats().of(MeasurementKind::kGnssVelocity).used, velocities);
+  EXPECT_NEAR(a.solution().lat_rad, b.solution().lat_rad, 1e-13);
+  EXPECT_NEAR(a.solution().lon_rad, b.solution().lon_rad, 1e-13);
+  EXPECT_LT((a.solution().vel_ned_mps - b.solution().vel_ned_mps).norm(), 1e-10);
+  EXPECT_LT((a.solution().vel_std_ned_mps - b.solution().vel_std_ned_mps).norm(), 1e-12);
+}
+
 TEST(Engine, TooLateAndFutureMeasurements) {
   Engine e{options_with_heading()};
   test::LineTrajectory traj = static_trajectory();
