@@ -104,15 +104,25 @@ void Engine::run_increment(const ImuRecord& record) {
 void Engine::fuse_due(std::int64_t horizon_ns) {
   // Entries stamped before the previous horizon are fused already (by the fuse_due() that reached
   // that horizon, on arrival in process_aiding, or dropped), but for those from unfused_from_ns_
-  // on, un-fused by replay_from(). So the scan starts at the earlier of the two instead of at the
-  // ~1 s of fused entries kept for re-propagation (a walk over ~60 entries per IMU sample).
+  // on: waiting for the covariance grid, or un-fused by replay_from(). So the scan starts at the
+  // earlier of the two instead of at the ~1 s of fused entries kept for re-propagation (a walk
+  // over ~60 entries per IMU sample).
   const std::int64_t from_ns = std::min(previous_horizon_ns_, unfused_from_ns_);
   unfused_from_ns_ = INT64_MAX;
   auto e = std::lower_bound(entries_.begin(), entries_.end(), from_ns,
                             [](const Entry& entry, std::int64_t t) { return entry.time_ns < t; });
   for (; e != entries_.end() && e->time_ns < horizon_ns; ++e) {
-    if (!e->applied()) fuse_entry(*e);
+    if (e->applied()) continue;
+    if (waits_for_grid(*e)) {
+      unfused_from_ns_ = std::min(unfused_from_ns_, e->time_ns);
+      continue;
+    }
+    fuse_entry(*e);
   }
+}
+
+bool Engine::waits_for_grid(const Entry& e) const {
+  return waits_for_covariance_grid(kind_of(e.m)) && !core_.covariance_current();
 }
 
 void Engine::fuse_entry(Entry& e) {
@@ -179,6 +189,12 @@ void Engine::process_aiding(const Measurement& m) {
                               [](std::int64_t time, const Entry& e) { return time < e.time_ns; });
   pos = entries_.insert(pos, Entry{m, t, 0, false});
   if (imu_seq_ == 0 || t >= latest_horizon_ns_) return;  // waits for the IMU to reach it
+  if (waits_for_grid(*pos) && t >= core_.covariance_time_ns) {
+    // Late, but inside the covariance step still open: fused at its end, as if it had come in
+    // time (no re-propagation).
+    unfused_from_ns_ = std::min(unfused_from_ns_, t);
+    return;
+  }
   if (t >= previous_horizon_ns_) {
     fuse_entry(*pos);
     // A snapshot taken at this sample (maybe_checkpoint) is from before the entry, though the
@@ -218,7 +234,8 @@ void Engine::replay_from(std::int64_t t) {
   last_checkpoint_ns_ = core_.x.time_ns;
   while (checkpoints_.size() > c) checkpoints_.pop_back();
   // Everything fused after the snapshot is fused again: by time that is every entry from its
-  // horizon on, and also an older one fused later, which the snapshot does not hold either.
+  // horizon on, and also an older one fused later (it arrived late within an IMU interval, or
+  // waited for the covariance grid), which the snapshot does not hold either.
   unfused_from_ns_ = INT64_MAX;
   for (Entry& e : entries_) {
     if (e.fused_order > from_order) e.fused_order = 0;

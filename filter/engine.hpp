@@ -18,6 +18,9 @@
 //   for the IMU to reach it; one from the past (up to max_latency_s, default 1 s) is fused by
 //   restoring the state snapshot before it and re-propagating the stored IMU samples and
 //   measurements (exact, not an approximation). Older ones are rejected ("too_late").
+//   Odometry (the kinds whose row in measurement_kinds.hpp says FuseTime::kCovarianceGrid) waits
+//   instead for the end of the covariance step its time falls in and is fused there, its time
+//   shift modelled; one that arrives late but within that step needs no re-propagation.
 // - Bad inputs (NaN/inf: "nan"; uncertainty <= 0 on a valid axis: "negative_std"; no valid axis
 //   or impossible values: "invalid") are rejected before they reach the state. Kinds the filter
 //   does not use (measurement_kinds.hpp: device solutions; magnetometer and pressure unless the
@@ -148,6 +151,9 @@ class Engine {
   void run_increment(const ImuRecord& record);
   void fuse_due(std::int64_t horizon_ns);
   void fuse_entry(Entry& e);
+  // Whether `e` waits for the covariance grid (FuseTime::kCovarianceGrid) and the covariance is
+  // not at it now.
+  bool waits_for_grid(const Entry& e) const;
   void maybe_checkpoint(const ImuRecord& record);
   void replay_from(std::int64_t time_ns);
   void forget_history();
@@ -166,8 +172,8 @@ class Engine {
   std::int64_t previous_horizon_ns_ = INT64_MIN;
   std::int64_t last_checkpoint_ns_ = INT64_MIN;
   std::uint64_t fused_order_ = 0;
-  // The oldest entry before previous_horizon_ns_ not yet fused (reset by a re-propagation);
-  // INT64_MAX when there is none. fuse_due() scans from it.
+  // The oldest entry before previous_horizon_ns_ not yet fused (waiting for the covariance grid,
+  // or reset by a re-propagation); INT64_MAX when there is none. fuse_due() scans from it.
   std::int64_t unfused_from_ns_ = INT64_MAX;
 
   RingBuffer<ImuRecord> imu_history_;

@@ -48,6 +48,7 @@ void FilterCore::restart(const FilterOptions& o) {
   ekf.n = o.states.active_dimension();
   memory = StrapdownMemory{};
   step = ProcessAccumulator{};
+  covariance_time_ns = t;
   earth = LocalEarth::at(0.0, 0.0);
   noise_density = process_noise_density(o);
   variance_floor = variance_floor_for(o);
@@ -146,6 +147,7 @@ void FilterCore::apply_constraints(const FilterOptions& o, const ImuIncrement& r
 
 void FilterCore::flush_covariance(const FilterOptions& o) {
   if (step.dt_s <= 0.0) return;
+  covariance_time_ns = x.time_ns;
   const bool offset_settling = o.states.gnss_time_offset && mode.navigating_since_ns != INT64_MIN &&
                                seconds_since(x.time_ns, mode.navigating_since_ns) < kOffsetSettle_s;
   if (adaptation.process_noise_scale == 1.0 && !offset_settling) {

@@ -179,6 +179,9 @@ struct FilterCore {
   ProcessAccumulator step;
   LocalEarth earth;
   std::int64_t earth_cell = INT64_MIN;  // covariance grid step `earth` was computed in
+  // State time the covariance was last brought to (flush_covariance): a measurement stamped at or
+  // after it can still be fused at the end of the pending step without re-propagation.
+  std::int64_t covariance_time_ns = INT64_MIN;
   StateVector noise_density = StateVector::Zero();
   StateVector variance_floor = StateVector::Zero();
   Eigen::Vector3d rate_b_rps = Eigen::Vector3d::Zero();    // compensated, newest sample
@@ -211,6 +214,9 @@ struct FilterCore {
   void apply_constraints(const FilterOptions& o, const ImuIncrement& raw);
   // Brings the covariance up to the state time (before any update).
   void flush_covariance(const FilterOptions& o);
+  // Whether the covariance is at the state time (no IMU interval waits in `step`): an update
+  // now costs no covariance step of its own.
+  bool covariance_current() const { return step.dt_s <= 0.0; }
   // Gate, update, correct the nominal state. `gate` <= 0: no gate.
   FuseResult apply(const FilterOptions& o, const Observation& obs, double gate);
   StateView view(double shift_s) const {

@@ -26,7 +26,9 @@ FuseResult fuse_speed(FilterCore& c, const FilterOptions& o, const std::optional
                       std::int64_t time_ns, double shift_s) {
   if (!note_speed(c, reading, time_ns)) return FuseResult::reject(RejectReason::kInvalid);
   if (!c.navigating()) return FuseResult::reject(RejectReason::kNotAligned);
-  const Observation obs = wheel_speed_observation(c.view(shift_s), *reading, o.wheel_lever_arm_m);
+  const StateView view = c.view(shift_s);
+  const Observation obs =
+      wheel_speed_observation(view, *reading, o.wheel_lever_arm_m, forward_accel_mps2(view, c.force_b_mps2));
   return c.apply(o, obs, o.gate_for(GatedAid::kOdometry, obs.rows()));
 }
 
@@ -69,9 +71,8 @@ FuseResult fuse(FilterCore& c, const FilterOptions& o, const WheelTicks& m, doub
   }
   if (!c.navigating()) return FuseResult::reject(RejectReason::kNotAligned);
   const StateView view = c.view(shift_s);
-  // Forward acceleration of the vehicle: specific force plus gravity, in the vehicle frame.
-  const double forward_accel = c.force_b_mps2.x() + (view.c_nb.transpose() * c.earth.gravity_ned_mps2).x();
-  const Observation obs = wheel_tick_observation(view, *speed, o.wheel_lever_arm_m, forward_accel);
+  const Observation obs =
+      wheel_tick_observation(view, *speed, o.wheel_lever_arm_m, forward_accel_mps2(view, c.force_b_mps2));
   return c.apply(o, obs, o.gate_for(GatedAid::kOdometry, obs.rows()));
 }
 

@@ -20,7 +20,9 @@ struct StateView {
   const LocalEarth& earth;
   Eigen::Matrix3d c_nb;
   Eigen::Vector3d rate_b_rps;  // compensated angular rate w_ib, vehicle frame
-  double shift_s = 0.0;        // measurement time minus state time (|shift| < one IMU interval)
+  // Measurement time minus state time: |shift| below one IMU interval; for odometry, fused at the
+  // covariance grid (measurement_kinds.hpp), down to minus one covariance interval.
+  double shift_s = 0.0;
   // Kinematic acceleration dv_n/dt of the newest sample (C_nb f + g; Coriolis and transport rate,
   // < 2e-3 m/s^2 at 30 m/s, left out): an input like the rate, for models that shift a velocity in
   // time. Zero unless the caller sets it.

@@ -32,14 +32,21 @@ std::optional<SpeedReading> speed_from_vehicle(const VehicleSpeed& m, double def
                       m.speed_std_mps > 0.0 ? m.speed_std_mps : default_std};
 }
 
+double forward_accel_mps2(const StateView& s, const Eigen::Vector3d& force_b_mps2) {
+  const Eigen::Matrix3d c_bn = s.c_nb.transpose();
+  const Eigen::Vector3d v_b = c_bn * s.x.vel_ned_mps;
+  return force_b_mps2.x() + (c_bn * s.earth.gravity_ned_mps2).x() - s.rate_b_rps.cross(v_b).x();
+}
+
 Observation wheel_speed_observation(const StateView& s, const SpeedReading& reading,
-                                    const Eigen::Vector3d& lever_arm_m) {
+                                    const Eigen::Vector3d& lever_arm_m, double forward_accel_mps2) {
   const BodyVelocityModel v = body_velocity_at(s, lever_arm_m, true);
   const double scale = 1.0 + s.x.wheel_scale;
+  const double forward_mps = v.vel_mps.x() + forward_accel_mps2 * s.shift_s;
   Observation obs(1);
-  obs.residual(0) = scale * v.vel_mps.x() - reading.speed_mps;
+  obs.residual(0) = scale * forward_mps - reading.speed_mps;
   obs.h.row(0) = scale * v.jacobian.row(0);
-  obs.h(0, sx::kWheelScale) = v.vel_mps.x();
+  obs.h(0, sx::kWheelScale) = forward_mps;
   obs.r(0, 0) = reading.std_mps * reading.std_mps;
   return obs;
 }

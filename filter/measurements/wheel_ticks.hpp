@@ -1,10 +1,10 @@
 // Odometry from tick counters (wheel encoders, a vehicle odometer's pulses): the count change
 // between two samples times the tick-to-metre scale is the distance the measurement point
 // travelled (Groves 2nd ed. §6.3.1, odometers count wheel-rotation pulses), and that over the
-// interval is the mean forward speed. The filter's speed is at the newer sample, so the model
+// interval is the mean forward speed. The count's time is the newer sample's, so the model
 // takes the mean of a speed changing at the forward acceleration a over the interval T, the speed
-// at its midpoint: s_mean = (1 + k) (e_x^T v_wheel - a T / 2), the wheel_speed.hpp model shifted
-// back by T / 2.
+// at its midpoint: s_mean = (1 + k) (e_x^T v_wheel + a (shift - T / 2)), the wheel_speed.hpp model
+// shifted back by T / 2 from the count's time.
 #pragma once
 
 #include <array>
@@ -36,9 +36,10 @@ struct TickSpeed {
 std::optional<TickSpeed> speed_from_ticks(const WheelTicks& previous, const WheelTicks& current,
                                           double m_per_tick, double speed_std_mps);
 
-// The mean-speed observation above. `forward_accel_mps2` (a) is a constant of the update, from
-// the newest compensated specific force and gravity: its error, times T / 2, is far below the
-// count quantisation.
+// The mean-speed observation above, at the view's time shift (wheel_speed.hpp): the speed model
+// moved back by T / 2 - shift. `forward_accel_mps2` (a, forward_accel_mps2() of the newest
+// compensated specific force) is a constant of the update: its error, times T / 2 - shift, is far
+// below the count quantisation.
 Observation wheel_tick_observation(const StateView& s, const TickSpeed& speed, const Eigen::Vector3d& lever_arm_m,
                                    double forward_accel_mps2);
 

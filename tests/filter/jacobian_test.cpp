@@ -261,7 +261,7 @@ std::vector<Model> models(const TestPoint& p) {
        list(kMagneticHeadingNeglected), true},
       {"baro_height", [=](const StateView& s) { return baro_height_observation(s, baro_height_m, 1.0); },
        baro_terms},
-      {"wheel_speed", [=](const StateView& s) { return wheel_speed_observation(s, speed, wheel_lever); },
+      {"wheel_speed", [=](const StateView& s) { return wheel_speed_observation(s, speed, wheel_lever, 1.5); },
        speed_terms},
       {"wheel_ticks",
        [=](const StateView& s) { return wheel_tick_observation(s, TickSpeed{speed, 0.1}, wheel_lever, 1.5); },

@@ -25,6 +25,22 @@ constexpr MeasurementKindTable fused_without_check() {
   return t;
 }
 static_assert(!covers_every_kind(fused_without_check()), "a fused kind needs its input check");
+constexpr MeasurementKindTable unfused_on_the_grid() {
+  MeasurementKindTable t = kMeasurementKinds;
+  t[static_cast<std::size_t>(MeasurementKind::kDeviceSolution)].when = FuseTime::kCovarianceGrid;
+  return t;
+}
+static_assert(!covers_every_kind(unfused_on_the_grid()), "only a kind the filter fuses can wait for the grid");
+
+// The kinds fused at the covariance grid are the ones whose models shift the state back to their
+// time (filter/measurements/wheel_speed.hpp); positions, headings and the rest keep their own.
+static_assert(waits_for_covariance_grid(MeasurementKind::kWheelSpeed) &&
+              waits_for_covariance_grid(MeasurementKind::kVehicleSpeed) &&
+              waits_for_covariance_grid(MeasurementKind::kWheelTicks));
+static_assert(!waits_for_covariance_grid(MeasurementKind::kGnssPosition) &&
+              !waits_for_covariance_grid(MeasurementKind::kGnssVelocity) &&
+              !waits_for_covariance_grid(MeasurementKind::kGnssHeading) &&
+              !waits_for_covariance_grid(MeasurementKind::kExternalPosition));
 
 TEST(MeasurementKinds, FusedKindsAreTheOnesTheFilterHasModelsFor) {
   // DESIGN.md: device solutions are for comparison. Wheel ticks are fused since issue 17
