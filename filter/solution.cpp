@@ -15,10 +15,14 @@ constexpr double kStatusHold_s = 1.0;
 constexpr double kUnknownHeadingStd_rad = 1.8137993642342178;
 
 // Euler-angle errors from the NED attitude error phi: d(roll, pitch, yaw) = M phi, the inverse of
-// the Euler-rate relation with the body rates rotated to NED (Titterton & Weston ch. 3).
-Eigen::Matrix3d euler_from_phi(const Eigen::Vector3d& rpy) {
-  const double cy = std::cos(rpy.z()), sy = std::sin(rpy.z());
-  const double cp = std::max(std::cos(rpy.y()), 1e-6), tp = std::sin(rpy.y()) / cp;
+// the Euler-rate relation with the body rates rotated to NED (Titterton & Weston ch. 3). Its
+// sines and cosines of yaw and pitch are read off the 3-2-1 DCM itself, C00 = cos p cos y,
+// C10 = cos p sin y, C20 = -sin p (Titterton & Weston eq. 3.47), instead of computing them again
+// from the angles: two sincos per pose on the output thread.
+Eigen::Matrix3d euler_from_phi(const Eigen::Matrix3d& c_nb) {
+  const double cp_cy = c_nb(0, 0), cp_sy = c_nb(1, 0), sp = -c_nb(2, 0);
+  const double cp = std::max(std::hypot(cp_cy, cp_sy), 1e-6);
+  const double cy = cp_cy / cp, sy = cp_sy / cp, tp = sp / cp;
   Eigen::Matrix3d m;
   m << cy / cp, sy / cp, 0.0,
        -sy, cy, 0.0,
@@ -86,7 +90,7 @@ void fill_state_fields(const StateFieldInputs& in, NavSolution& out) {
 
   out.pos_std_ned_m = in.pos_cov.diagonal().cwiseMax(0.0).cwiseSqrt();
   out.vel_std_ned_mps = in.vel_cov.diagonal().cwiseMax(0.0).cwiseSqrt();
-  const Eigen::Matrix3d m = euler_from_phi(out.rpy_rad);
+  const Eigen::Matrix3d m = euler_from_phi(c_nb);
   out.att_std_rpy_rad = (m * in.att_cov * m.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
 
   // Biases are estimated in the vehicle frame and reported in the sensor frame (MIP convention).
