@@ -253,11 +253,8 @@ void Engine::forget_history() {
   for (const Entry& e : entries_) {
     if (!e.counted) count(kind_of(e.m), FuseResult::reject(RejectReason::kTimeGap));
   }
-  entries_.clear();
-  unfused_from_ns_ = INT64_MAX;
-  checkpoints_.clear();
+  drop_snapshots_and_entries();
   imu_history_.clear();
-  last_checkpoint_ns_ = INT64_MIN;
   latest_horizon_ns_ = previous_horizon_ns_ = INT64_MIN;
 }
 
@@ -321,10 +318,7 @@ void Engine::reset(std::uint32_t mask) {
     }
   }
   // Snapshots from before the reset must not be replayed into it.
-  entries_.clear();
-  unfused_from_ns_ = INT64_MAX;
-  checkpoints_.clear();
-  last_checkpoint_ns_ = INT64_MIN;
+  drop_snapshots_and_entries();
   solution_dirty_ = true;
 }
 
@@ -335,9 +329,13 @@ void Engine::set_gnss_lever_arm(const Eigen::Vector3d& lever_arm_m, int antenna)
   }
   options_.gnss_lever_arm_m = lever_arm_m;
   core_.x.gnss_lever_arm_m = lever_arm_m;
-  checkpoints_.clear();
+  drop_snapshots_and_entries();
+}
+
+void Engine::drop_snapshots_and_entries() {
   entries_.clear();
   unfused_from_ns_ = INT64_MAX;
+  checkpoints_.clear();
   last_checkpoint_ns_ = INT64_MIN;
 }
 

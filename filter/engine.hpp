@@ -157,6 +157,9 @@ class Engine {
   void maybe_checkpoint(const ImuRecord& record);
   void replay_from(std::int64_t time_ns);
   void forget_history();
+  // The held aiding and the snapshots (and what keeps track of them) are gone: nothing from before
+  // is fused again or re-propagated into what comes.
+  void drop_snapshots_and_entries();
   void take_initial_heading();
   void count(MeasurementKind kind, const FuseResult& r);
   void fill_solution() const;

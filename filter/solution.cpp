@@ -17,8 +17,8 @@ constexpr double kUnknownHeadingStd_rad = 1.8137993642342178;
 // Euler-angle errors from the NED attitude error phi: d(roll, pitch, yaw) = M phi, the inverse of
 // the Euler-rate relation with the body rates rotated to NED (Titterton & Weston ch. 3). Its
 // sines and cosines of yaw and pitch are read off the 3-2-1 DCM itself, C00 = cos p cos y,
-// C10 = cos p sin y, C20 = -sin p (Titterton & Weston eq. 3.47), instead of computing them again
-// from the angles: two sincos per pose on the output thread.
+// C10 = cos p sin y, C20 = -sin p (Titterton & Weston eq. 3.47), which the fill holds already,
+// instead of computing them again from the angles (no difference the replay's time shows).
 Eigen::Matrix3d euler_from_phi(const Eigen::Matrix3d& c_nb) {
   const double cp_cy = c_nb(0, 0), cp_sy = c_nb(1, 0), sp = -c_nb(2, 0);
   const double cp = std::max(std::hypot(cp_cy, cp_sy), 1e-6);

@@ -39,10 +39,10 @@ double forward_accel_mps2(const StateView& s, const Eigen::Vector3d& force_b_mps
 }
 
 Observation wheel_speed_observation(const StateView& s, const SpeedReading& reading,
-                                    const Eigen::Vector3d& lever_arm_m, double forward_accel_mps2) {
+                                    const Eigen::Vector3d& lever_arm_m, double point_accel_mps2) {
   const BodyVelocityModel v = body_velocity_at(s, lever_arm_m, true);
   const double scale = 1.0 + s.x.wheel_scale;
-  const double forward_mps = v.vel_mps.x() + forward_accel_mps2 * s.shift_s;
+  const double forward_mps = v.vel_mps.x() + point_accel_mps2 * s.shift_s;
   Observation obs(1);
   obs.residual(0) = scale * forward_mps - reading.speed_mps;
   obs.h.row(0) = scale * v.jacobian.row(0);

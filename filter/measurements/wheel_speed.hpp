@@ -35,10 +35,11 @@ std::optional<SpeedReading> speed_from_vehicle(const VehicleSpeed& m, double def
 // speed of w_z 1.2 m, and -w x v_b a forward acceleration of w_z^2 1.2 m (0.3 m/s^2 at 0.5 rad/s).
 double forward_accel_mps2(const StateView& s, const Eigen::Vector3d& force_b_mps2);
 
-// `forward_accel_mps2` (a) is a constant of the update, like the view's rate in the lever-arm
-// term: its dependence on the state (the tilt through C_nb^T g) times |shift| <= 50 ms is below
-// g |shift| = 0.5 mm/s per mrad of tilt, far below the speed noise; H leaves it out.
+// `point_accel_mps2` (a, forward_accel_mps2() of the newest compensated specific force) is a
+// constant of the update, like the view's rate in the lever-arm term: its dependence on the state
+// (the tilt through C_nb^T g) times |shift| <= 50 ms is below g |shift| = 0.5 mm/s per mrad of
+// tilt, far below the speed noise; H leaves it out.
 Observation wheel_speed_observation(const StateView& s, const SpeedReading& reading,
-                                    const Eigen::Vector3d& lever_arm_m, double forward_accel_mps2);
+                                    const Eigen::Vector3d& lever_arm_m, double point_accel_mps2);
 
 }  // namespace navfuse::filter

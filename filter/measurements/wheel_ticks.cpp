@@ -54,9 +54,9 @@ std::optional<TickSpeed> speed_from_ticks(const WheelTicks& previous, const Whee
 }
 
 Observation wheel_tick_observation(const StateView& s, const TickSpeed& speed, const Eigen::Vector3d& lever_arm_m,
-                                   double forward_accel_mps2) {
-  Observation obs = wheel_speed_observation(s, speed.reading, lever_arm_m, forward_accel_mps2);
-  const double back_mps = 0.5 * forward_accel_mps2 * speed.interval_s;
+                                   double point_accel_mps2) {
+  Observation obs = wheel_speed_observation(s, speed.reading, lever_arm_m, point_accel_mps2);
+  const double back_mps = 0.5 * point_accel_mps2 * speed.interval_s;
   obs.residual(0) -= (1.0 + s.x.wheel_scale) * back_mps;
   obs.h(0, sx::kWheelScale) -= back_mps;
   return obs;

@@ -37,10 +37,10 @@ std::optional<TickSpeed> speed_from_ticks(const WheelTicks& previous, const Whee
                                           double m_per_tick, double speed_std_mps);
 
 // The mean-speed observation above, at the view's time shift (wheel_speed.hpp): the speed model
-// moved back by T / 2 - shift. `forward_accel_mps2` (a, forward_accel_mps2() of the newest
+// moved back by T / 2 - shift. `point_accel_mps2` (a, forward_accel_mps2() of the newest
 // compensated specific force) is a constant of the update: its error, times T / 2 - shift, is far
 // below the count quantisation.
 Observation wheel_tick_observation(const StateView& s, const TickSpeed& speed, const Eigen::Vector3d& lever_arm_m,
-                                   double forward_accel_mps2);
+                                   double point_accel_mps2);
 
 }  // namespace navfuse::filter
